@@ -1,0 +1,34 @@
+#pragma once
+//! \file grading/release.hpp
+//! The single-source rule: answers live only in solutions/. labs/NN/src is generated from solutions/NN/src by
+//! replacing every block
+//!     // BEGIN SOLUTION
+//!     ...
+//!     // END SOLUTION
+//! with `throw geolab::NotImplemented(__func__);` at the block's indentation, or with the block's
+//! `// STUB: <code>` lines (uncommented) when it has any. Unterminated, nested or stray markers are errors.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace geolab::grading {
+
+//! The student version of one solution file. \throw std::runtime_error "NAME:LINE: reason" on a bad marker.
+std::string strip_solutions(const std::string& text, const std::string& name);
+
+//! One difference between labs/ and what the generator makes from solutions/.
+struct LabDiff {
+    std::filesystem::path file;  //!< relative to the course tree
+    std::string reason;          //!< "differs", "missing", "not generated from solutions/"
+};
+
+//! Regenerate every labs/NN/src/*.cpp from solutions/NN/src/*.cpp under `root`. With write = false only
+//! compares; returns the differences (empty: labs/ is exactly what the generator makes).
+std::vector<LabDiff> generate_labs(const std::filesystem::path& root, bool write);
+
+//! Write the student release of the course tree `root` into `out` (which must not exist or be empty): no
+//! solutions/, no hidden tests, no build or model folders, labs/ regenerated; then scan it for leaks.
+//! \return the files written. \throw std::runtime_error on a leak (marker or solution text found) or I/O error.
+std::vector<std::filesystem::path> make_release(const std::filesystem::path& root, const std::filesystem::path& out);
+
+}  // namespace geolab::grading

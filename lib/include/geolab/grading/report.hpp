@@ -1,0 +1,31 @@
+#pragma once
+//! \file grading/report.hpp
+//! The grader's reports: a console table a student understands, Gradescope's results.json, and JUnit XML.
+#include <filesystem>
+#include <ostream>
+#include <vector>
+
+#include "geolab/grading/runner.hpp"
+
+namespace geolab::grading {
+
+//! What a report shows of hidden tests.
+enum class HiddenPolicy {
+    show,         //!< instructor's view: everything
+    name_points,  //!< student's view before release: name, points and pass/fail only
+};
+
+//! The console table: test, points, status, the first failure message, the hint; then totals per task.
+void print_console(std::ostream& os, const std::vector<LabReport>& labs, HiddenPolicy hidden, bool color);
+
+//! Gradescope's results.json (score, max_score, execution_time, output, tests[] with name, number, score,
+//! max_score, status, output, visibility, tags). Hidden tests get visibility "after_published".
+void write_gradescope_json(const std::filesystem::path& file, const std::vector<LabReport>& labs);
+
+//! JUnit XML: one <testsuite> per lab and variant, one <testcase> per test (failure / error / skipped).
+void write_junit(const std::filesystem::path& file, const std::vector<LabReport>& labs);
+
+//! The message of a result as shown to a student: the first message, shortened.
+std::string first_message(const TestResult& r, std::size_t max_chars = 300);
+
+}  // namespace geolab::grading

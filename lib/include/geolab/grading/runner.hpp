@@ -1,0 +1,76 @@
+#pragma once
+//! \file grading/runner.hpp
+//! The grader: runs every test case of a test program in its own child process, with a hard wall-clock timeout
+//! (the whole process group is killed), a memory cap, a file-size cap and an output cap. The child reports its
+//! verdict through a private pipe, prefixed by a per-run random token; the parent alone decides the outcome.
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace geolab::grading {
+
+//! How one test case ended, as the parent saw it.
+enum class Status {
+    passed,           //!< the verdict line said passed
+    failed,           //!< an assertion failed or an unexpected exception escaped
+    not_implemented,  //!< failed, and a geolab::NotImplemented was thrown (an untouched stub)
+    crashed,          //!< killed by a signal (SIGSEGV, SIGABRT, ...)
+    timeout,          //!< ran past its wall-clock limit and was killed
+    error,            //!< exited early, flooded its output, or broke the protocol
+};
+const char* to_string(Status s);
+
+//! One test case as the test program lists it (see grading/test.hpp for the decorators).
+struct TestInfo {
+    std::string name, suite, file;
+    int line = 0;
+    double points = 0;
+    bool hidden = false;
+    std::string hint;
+    double timeout_s = 0;  //!< 0: RunOptions::timeout_s
+};
+
+//! The outcome of one test case.
+struct TestResult {
+    TestInfo info;
+    Status status = Status::error;
+    double score = 0;
+    std::vector<std::string> messages;  //!< failure messages (assertions, exceptions, the reason for crashes)
+    std::string output;                 //!< what the test printed (stdout + stderr), capped
+    double seconds = 0;
+};
+
+//! Limits and parallelism of a grading run.
+struct RunOptions {
+    double timeout_s = 20;                      //!< default wall-clock limit per test
+    std::size_t memory_mb = 4096;               //!< address-space cap per test process (RLIMIT_AS)
+    std::size_t output_cap = 1 << 20;           //!< bytes of output before the test is killed
+    std::size_t file_size_mb = 256;             //!< largest file a test may write (RLIMIT_FSIZE)
+    int jobs = 2;                               //!< tests run at once
+    std::function<void(const TestResult&, std::size_t done, std::size_t total)> on_result;  //!< progress
+};
+
+//! What grading one test program produced.
+struct LabReport {
+    std::string lab;      //!< e.g. "01_halfedge"
+    std::string variant;  //!< "student" or "solution"
+    std::vector<TestResult> results;
+    std::string error;  //!< non-empty when the program could not be listed (then results is empty)
+    double seconds = 0;
+    double score() const;
+    double max_score() const;
+};
+
+//! The test cases of `program` (runs `program --geolab-list` in a child with the same limits).
+//! \throw std::runtime_error naming the program and the reason if it cannot be listed.
+std::vector<TestInfo> list_tests(const std::filesystem::path& program, const RunOptions& opt);
+
+//! Run one test case in a fresh child process and classify the outcome.
+TestResult run_test(const std::filesystem::path& program, const TestInfo& test, const RunOptions& opt);
+
+//! List and run every test case of `program`, `opt.jobs` at a time; results in listing order.
+LabReport grade_program(const std::string& lab, const std::string& variant, const std::filesystem::path& program,
+                        const RunOptions& opt);
+
+}  // namespace geolab::grading

@@ -1,0 +1,126 @@
+// Tests of the grader itself: every misbehaving fixture case costs only its own points and is classified
+// correctly; the reports are well-formed; the generator rejects bad markers.
+#include <fstream>
+#include <map>
+
+#include <nlohmann/json.hpp>
+
+#include "geolab/grading/release.hpp"
+#include "geolab/grading/report.hpp"
+#include "geolab/grading/runner.hpp"
+#include "geolab/grading/test.hpp"
+
+using geolab::grading::Status;
+
+#ifndef GEOLAB_FIXTURE_PROGRAM
+#error "GEOLAB_FIXTURE_PROGRAM must name the fixture test program"
+#endif
+
+namespace {
+
+const geolab::grading::LabReport& fixture_report() {
+    static const geolab::grading::LabReport report = [] {
+        geolab::grading::RunOptions opt;
+        opt.timeout_s = 10;
+        opt.memory_mb = 1024;
+        opt.output_cap = 256 << 10;
+        return geolab::grading::grade_program("fixtures", "student", GEOLAB_FIXTURE_PROGRAM, opt);
+    }();
+    return report;
+}
+
+const geolab::grading::TestResult& result(const std::string& name) {
+    for (const auto& r : fixture_report().results)
+        if (r.info.name == name) return r;
+    FAIL("no result for " << name);
+    throw 0;
+}
+
+}  // namespace
+
+TEST_CASE("the grader lists every fixture with its metadata") {
+    const auto& rep = fixture_report();
+    REQUIRE(rep.error == "");
+    CHECK(rep.results.size() == 15);
+    CHECK(result("hidden and passes").info.hidden);
+    CHECK(result("hidden and passes").info.points == 2);
+    CHECK(result("fails an assertion").info.hint == "look at the sum");
+    CHECK(result("ungraded").info.points == 0);
+    CHECK(result("passes").info.suite == "fixtures");
+}
+
+TEST_CASE("each misbehaviour is isolated and classified") {
+    const std::map<std::string, Status> expected = {
+        {"passes", Status::passed},
+        {"fails an assertion", Status::failed},
+        {"not implemented", Status::not_implemented},
+        {"segfaults", Status::crashed},
+        {"aborts", Status::crashed},
+        {"hangs", Status::timeout},
+        {"exits early with status 0", Status::error},
+        {"quick_exit", Status::error},
+        {"floods stdout", Status::error},
+        {"prints a fake success", Status::failed},
+        {"leaves a child that sleeps forever", Status::passed},
+        {"allocates without bound", Status::failed},
+        {"throws an unexpected exception", Status::failed},
+        {"hidden and passes", Status::passed},
+        {"ungraded", Status::passed},
+    };
+    for (const auto& [name, status] : expected) {
+        const auto& r = result(name);
+        CAPTURE(name);
+        CAPTURE(geolab::grading::first_message(r));
+        CHECK(std::string(to_string(r.status)) == std::string(to_string(status)));
+        CHECK(r.score == (status == Status::passed ? r.info.points : 0.0));
+    }
+    CHECK(fixture_report().score() == 4);
+    CHECK(fixture_report().max_score() == 15);
+}
+
+TEST_CASE("messages say what happened") {
+    CHECK(result("segfaults").messages.at(0).find("SIGSEGV") != std::string::npos);
+    CHECK(result("fails an assertion").messages.at(0).find("sum == 3") != std::string::npos);
+    CHECK(result("fails an assertion").messages.at(0).find("input: 1 + 1") != std::string::npos);
+    CHECK(result("not implemented").messages.at(0).find("not implemented: answer") != std::string::npos);
+    CHECK(result("exits early with status 0").messages.at(0).find("exit") != std::string::npos);
+    CHECK(result("hangs").seconds < 5);
+    CHECK(result("floods stdout").output.size() <= (256u << 10));
+}
+
+TEST_CASE("reports: results.json and JUnit are written and well-formed") {
+    const std::string json_path = "grader_test_results.json", junit_path = "grader_test_junit.xml";
+    geolab::grading::write_gradescope_json(json_path, {fixture_report()});
+    std::ifstream f(json_path);
+    auto j = nlohmann::json::parse(f);
+    CHECK(j["score"] == 4);
+    CHECK(j["max_score"] == 15);
+    REQUIRE(j["tests"].size() == 15);
+    for (const auto& t : j["tests"]) {
+        CHECK(t.contains("name"));
+        CHECK(t.contains("number"));
+        CHECK((t["status"] == "passed" || t["status"] == "failed"));
+        CHECK((t["visibility"] == "visible" || t["visibility"] == "after_published"));
+        CHECK(t["score"].get<double>() <= t["max_score"].get<double>());
+    }
+    geolab::grading::write_junit(junit_path, {fixture_report()});
+    std::ifstream x(junit_path);
+    std::string xml((std::istreambuf_iterator<char>(x)), {});
+    CHECK(xml.find("<testsuites>") != std::string::npos);
+    CHECK(xml.find("tests=\"15\"") != std::string::npos);
+}
+
+TEST_CASE("the generator strips solution blocks and rejects bad markers") {
+    using geolab::grading::strip_solutions;
+    const std::string src = "int f(int x) {\n    // BEGIN SOLUTION\n    return 2 * x;\n    // END SOLUTION\n}\n";
+    CHECK(strip_solutions(src, "a.cpp") == "int f(int x) {\n    throw geolab::NotImplemented(__func__);\n}\n");
+    const std::string with_stub = "void g() {\n  // BEGIN SOLUTION\n  // STUB: return;\n  work();\n  // END SOLUTION\n}\n";
+    CHECK(strip_solutions(with_stub, "b.cpp") == "void g() {\n  return;\n}\n");
+    CHECK_THROWS_WITH_AS(strip_solutions("// BEGIN SOLUTION\nx\n", "c.cpp"), "c.cpp:1: BEGIN SOLUTION is never closed",
+                         std::runtime_error);
+    CHECK_THROWS_WITH_AS(strip_solutions("// BEGIN SOLUTION\n// BEGIN SOLUTION\n// END SOLUTION\n", "d.cpp"),
+                         "d.cpp:2: nested BEGIN SOLUTION (the block opened at line 1 is not closed)", std::runtime_error);
+    CHECK_THROWS_AS(strip_solutions("x\n// END SOLUTION\n", "e.cpp"), std::runtime_error);
+    CHECK_THROWS_AS(strip_solutions("// BEGIN SOLUTION: f\n// END SOLUTION\n", "f.cpp"), std::runtime_error);
+    CHECK_THROWS_AS(strip_solutions("// BEGIN SOLUTIONS\n", "g.cpp"), std::runtime_error);
+}

@@ -1,0 +1,129 @@
+// geolab grade: run the labs' graded tests, each case in its own process, and report.
+#include <unistd.h>
+
+#include <iostream>
+#include <thread>
+
+#include "commands.hpp"
+#include "geolab/config.hpp"
+#include "geolab/grading/report.hpp"
+#include "geolab/grading/runner.hpp"
+
+namespace geolab::cli {
+namespace {
+
+struct GradeArgs {
+    std::vector<std::string> labs;
+    bool solutions = false;
+    std::string json, junit, expect;
+    int jobs = 0;
+    double timeout = 20;
+    std::size_t memory_mb = 4096;
+    bool student_view = false;
+    bool quiet = false;
+};
+
+// CI's honesty checks: the reference scores 100%; untouched stubs score 0 and every graded test fails cleanly.
+bool check_expectation(const std::vector<grading::LabReport>& reports, const std::string& expect) {
+    bool ok = true;
+    for (const auto& lab : reports) {
+        if (!lab.error.empty()) {
+            std::cerr << "expect " << expect << ": lab " << lab.lab << " could not be run\n";
+            ok = false;
+            continue;
+        }
+        if (lab.results.empty()) {
+            std::cerr << "expect " << expect << ": lab " << lab.lab << " has no tests\n";
+            ok = false;
+        }
+        for (const auto& r : lab.results) {
+            if (r.info.points <= 0) continue;
+            if (expect == "full" && r.status != grading::Status::passed) {
+                std::cerr << "expect full: " << lab.lab << ": '" << r.info.name << "' " << to_string(r.status) << ": "
+                          << grading::first_message(r) << "\n";
+                ok = false;
+            }
+            const bool clean = r.status == grading::Status::failed || r.status == grading::Status::not_implemented;
+            if (expect == "zero" && !clean) {
+                std::cerr << "expect zero: " << lab.lab << ": '" << r.info.name << "' " << to_string(r.status)
+                          << (r.status == grading::Status::passed ? " on the stub: the test asserts nothing a stub can't satisfy"
+                                                                  : ": a stub must fail cleanly")
+                          << "\n";
+                ok = false;
+            }
+        }
+    }
+    return ok;
+}
+
+int run_grade(const GradeArgs& a) {
+    std::vector<std::string> labs;
+    for (const auto& l : a.labs) labs.push_back(resolve_lab(l));
+    if (labs.empty()) labs = known_labs();
+    if (a.solutions && !config::has_solutions)
+        throw std::runtime_error("--solutions: this tree has no solutions/ (the student release grades your own code)");
+
+    grading::RunOptions opt;
+    opt.timeout_s = a.timeout;
+    opt.memory_mb = a.memory_mb;
+    opt.jobs = a.jobs > 0 ? a.jobs : std::max(1u, std::thread::hardware_concurrency());
+    const bool tty = ::isatty(2);
+    opt.on_result = [&](const grading::TestResult& r, std::size_t done, std::size_t total) {
+        if (a.quiet) return;
+        if (tty)
+            std::cerr << "\r  [" << done << "/" << total << "] " << std::string(60, ' ') << "\r  [" << done << "/"
+                      << total << "] " << r.info.name.substr(0, 60) << std::flush;
+        else if (done == total || done % 10 == 0)
+            std::cerr << "  " << done << "/" << total << " tests run\n";
+    };
+
+    std::vector<grading::LabReport> reports;
+    const std::string variant = a.solutions ? "solution" : "student";
+    for (const auto& lab : labs) {
+        const auto program = bin_dir() / ("test_" + lab + (a.solutions ? "_solution" : ""));
+        if (!a.quiet) std::cerr << "grading " << lab << " (" << variant << ") ...\n";
+        reports.push_back(grading::grade_program(lab, variant, program, opt));
+        if (tty && !a.quiet) std::cerr << "\n";
+    }
+    grading::print_console(std::cout, reports,
+                           a.student_view ? grading::HiddenPolicy::name_points : grading::HiddenPolicy::show,
+                           ::isatty(1));
+    if (!a.json.empty()) {
+        grading::write_gradescope_json(a.json, reports);
+        std::cout << "results.json written to " << a.json << "\n";
+    }
+    if (!a.junit.empty()) {
+        grading::write_junit(a.junit, reports);
+        std::cout << "JUnit XML written to " << a.junit << "\n";
+    }
+    if (!a.expect.empty()) {
+        const bool ok = check_expectation(reports, a.expect);
+        std::cout << "expect " << a.expect << ": " << (ok ? "OK" : "FAILED") << "\n";
+        return ok ? 0 : 1;
+    }
+    for (const auto& r : reports)
+        if (!r.error.empty()) return 2;
+    return 0;
+}
+
+}  // namespace
+
+void add_grade(CLI::App& app, int& status) {
+    auto a = std::make_shared<GradeArgs>();
+    auto* cmd = app.add_subcommand("grade", "Run the graded tests of labs (all by default), one process per test");
+    cmd->add_option("labs", a->labs, "Labs to grade: 01, 1 or 01_halfedge (default: all)");
+    cmd->add_flag("--solutions", a->solutions, "Grade the reference solutions instead of labs/ (instructors)");
+    cmd->add_option("--json", a->json, "Write Gradescope results.json here");
+    cmd->add_option("--junit", a->junit, "Write JUnit XML here");
+    cmd->add_option("--jobs,-j", a->jobs, "Tests run at once (default: the number of cores)");
+    cmd->add_option("--timeout", a->timeout, "Default wall-clock limit per test, seconds")->capture_default_str();
+    cmd->add_option("--memory-mb", a->memory_mb, "Address-space limit per test, MiB")->capture_default_str();
+    cmd->add_flag("--student-view", a->student_view, "Withhold the messages of hidden tests, as students see it");
+    cmd->add_flag("--quiet,-q", a->quiet, "No progress lines");
+    cmd->add_option("--expect", a->expect, "CI check: 'full' (every graded test passes) or 'zero' (every graded test "
+                                           "fails cleanly: failed or not implemented, never crashed or timed out)")
+        ->check(CLI::IsMember({"full", "zero"}));
+    cmd->callback([a, &status] { status = run_grade(*a); });
+}
+
+}  // namespace geolab::cli
