@@ -1,0 +1,77 @@
+#pragma once
+//! \file render/viewer.hpp
+//! An interactive window (GLFW, GL 3.3 core) for demos and lectures.
+//!
+//! Mouse: left drag orbits, right drag (or shift + left drag) pans, scroll zooms; a left click without drag
+//! calls the pick callback with the world-space ray under the cursor. Keys: Esc closes, S saves a screenshot
+//! (geolab_screenshot_N.png in the working directory), Home re-frames the scene; every other key goes to the
+//! key callback. An exception thrown by a callback closes the window and is rethrown by run() / run_frames().
+//! Without a display the constructor throws NoDisplay; programs catch it and suggest `--png FILE`.
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include "geolab/render/camera.hpp"
+#include "geolab/render/image.hpp"
+#include "geolab/render/scene.hpp"
+
+namespace geolab::render {
+
+//! No window can be opened (no DISPLAY / WAYLAND_DISPLAY, or GLFW cannot connect or create a GL 3.3 context).
+//! what() says why and points to the headless option (`--png FILE`).
+class NoDisplay : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+//! True when a display is configured and GLFW can connect to it (a window can probably be opened).
+bool display_available();
+
+//! A window showing a Scene with an orbit camera. One Viewer at a time per thread; all calls from the thread
+//! that created it.
+class Viewer {
+public:
+    //! Opens the window (width × height screen units). \throw NoDisplay when no window can be opened.
+    explicit Viewer(std::string title, int width = 1024, int height = 768);
+    ~Viewer();
+    Viewer(const Viewer&) = delete;
+    Viewer& operator=(const Viewer&) = delete;
+
+    //! Replaces what is shown. The camera is re-framed on the new bounds when `reframe` or on the first scene.
+    void set_scene(Scene scene, bool reframe = false);
+    const Scene& scene() const;
+    void set_camera(const Camera& camera);
+    const Camera& camera() const;
+    //! A status line shown in the title bar after the title ("title — status").
+    void set_status(std::string status);
+
+    //! Called on key press (and repeat) with the GLFW key code; letters are their upper-case ASCII code
+    //! ('N'), digits '0'..'9', arrows GLFW_KEY_RIGHT etc. (262..265). Not called for Esc, S and Home.
+    void on_key(std::function<void(int key)> callback);
+    //! Called on a left click without drag with the world-space ray under the cursor (see pick.hpp).
+    void on_pick(std::function<void(const Ray& ray)> callback);
+    //! Called before every frame with the seconds since run() started; while set, the window redraws
+    //! continuously (for animations) instead of waiting for input.
+    void on_frame(std::function<void(double seconds)> callback);
+
+    //! Shows the window until it is closed (Esc, the close button or close()). Sleeps until input arrives
+    //! unless on_frame is set.
+    void run();
+    //! Processes input and draws `frames` frames, then returns; false once the window has been closed.
+    //! For scripted runs (e.g. draw, then screenshot()).
+    bool run_frames(int frames);
+    //! Draws the current scene and returns the window's pixels (framebuffer size).
+    Image capture();
+    //! capture() written as PNG. \throw geolab::IoError if the file cannot be written.
+    void screenshot(const std::filesystem::path& file);
+    //! Asks the window to close; run() returns after the current frame.
+    void close();
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace geolab::render
