@@ -4,6 +4,9 @@
 //! Every reader validates as it goes and throws geolab::IoError naming the file, the line (text formats) or
 //! element (binary formats) and the reason: truncated data, an index out of range, a NaN or inf coordinate,
 //! wrong counts, an unknown format, an empty file. A reader never returns a partial or garbage soup.
+//! Text errors carry the 1-based line; binary errors have line 0 and a reason starting "element NAME N: "
+//! (PLY, e.g. "element face 12: ...") or "element N: " (STL triangle N). Header counts are checked against the
+//! file size before anything is reserved, so a lying header fails at once.
 #include <filesystem>
 #include <string>
 
@@ -28,7 +31,9 @@ PolygonSoup read_mesh(const std::filesystem::path& path);
 PolygonSoup read_mesh_from_string(const std::string& data, MeshFormat format, const std::string& name = "<memory>");
 
 //! Write `soup` to `path` in the format of its extension (or the one given). STL triangulates polygons
-//! as fans. \throw IoError when the file cannot be written.
+//! as fans. Text formats write the shortest decimals that read back exactly; PLY writes doubles; STL floats.
+//! \throw IoError when the file cannot be written or the extension is unknown; std::invalid_argument when a
+//! face index is out of range (the soup is checked before anything is written).
 void write_mesh(const std::filesystem::path& path, const PolygonSoup& soup);
 void write_mesh(const std::filesystem::path& path, const PolygonSoup& soup, MeshFormat format);
 
