@@ -24,7 +24,7 @@ public:
             std::string name = r.run_name.function_name;
             auto slash = name.rfind('/');
             if (slash == std::string::npos) continue;
-            const double t = r.GetAdjustedRealTime() * benchmark::GetTimeUnitMultiplier(r.time_unit);
+            const double t = r.GetAdjustedRealTime() / benchmark::GetTimeUnitMultiplier(r.time_unit);
             auto& slot = seconds[name.substr(0, slash)][name.substr(slash + 1)];
             if (aggregate || slot == 0) slot = t;  // the median wins over single repetitions
         }
