@@ -1,0 +1,203 @@
+// Lab 01 hidden tests: run by the grader, left out of the student release. Same tasks (suites) as the public ones.
+#include <chrono>
+
+#include "helpers.hpp"
+
+using namespace lab01;
+
+namespace {
+// Two tetrahedra touching only at vertex 0: the second is the first mirrored through vertex 0.
+PolygonSoup tetrahedra_sharing_a_vertex() {
+    const PolygonSoup tet = fx::tetrahedron();
+    PolygonSoup s = tet;
+    const glm::dvec3 apex = s.positions[0];
+    for (int i = 1; i < 4; ++i) s.positions.push_back(2.0 * apex - s.positions[i]);  // vertices 4, 5, 6
+    const std::uint32_t map[4] = {0, 4, 5, 6};
+    for (std::size_t f = 0; f < 4; ++f) {
+        auto t = tet.face(f);
+        // mirroring reverses orientation: list the corners backwards to keep the faces outward
+        s.add_face({map[t[2]], map[t[1]], map[t[0]]});
+    }
+    return s;
+}
+}  // namespace
+
+TEST_SUITE("Task 1: build the mesh") {
+    TEST_CASE("build_mesh hidden: Mobius strips are rejected as inconsistent orientation" * geolab::points(3) *
+              geolab::hidden() * geolab::hint("A non-orientable surface always has some directed edge used twice.")) {
+        build_valid(fx::tetrahedron(), "tetrahedron");
+        for (auto [segments, tri] : {std::pair{12, true}, std::pair{7, false}}) {
+            INFO("mobius(" << segments << ", " << (tri ? "triangles" : "quads") << ")");
+            const PolygonSoup soup = fx::mobius(segments, tri);
+            CHECK_THROWS_AS(build_mesh(soup), geolab::TopologyError);
+            CHECK(contains(build_error_message(soup), "inconsistent orientation"));
+        }
+    }
+
+    TEST_CASE(
+        "build_mesh hidden: two closed tetrahedra sharing vertex 0 are a complex vertex" * geolab::points(2) *
+        geolab::hidden() *
+        geolab::hint("A vertex without boundary can still be non-manifold: walk around it and check that you meet "
+                     "all the half-edges leaving it.")) {
+        build_valid(fx::tetrahedron(), "tetrahedron");
+        const PolygonSoup soup = tetrahedra_sharing_a_vertex();
+        INFO(mesh_to_string(soup));
+        CHECK_THROWS_AS(build_mesh(soup), geolab::TopologyError);
+        const std::string msg = build_error_message(soup);
+        CAPTURE(msg);
+        CHECK(contains(msg, "complex vertex 0"));
+    }
+
+    TEST_CASE("build_mesh hidden: faces in any order and from any first corner build the same surface" *
+              geolab::points(2) * geolab::hidden()) {
+        const PolygonSoup in = fx::icosphere(1);
+        PolygonSoup s;
+        s.positions = in.positions;
+        for (std::size_t f = in.n_faces(); f-- > 0;) {  // faces backwards, each rotated by f % 3
+            auto t = in.face(f);
+            const std::size_t r = f % 3;
+            s.add_face({t[r], t[(r + 1) % 3], t[(r + 2) % 3]});
+        }
+        const Mesh m = build_valid(s, "shuffled icosphere(1)");
+        CHECK(m.n_vertices() == 42);
+        CHECK(m.n_edges() == 120);
+        CHECK(m.n_faces() == 80);
+        for (Face f : m.faces()) {
+            CAPTURE(f);
+            CHECK(m.from_vertex(m.halfedge(f)).idx == s.face(f.idx)[0]);
+            CHECK(m.to_vertex(m.halfedge(f)).idx == s.face(f.idx)[1]);
+        }
+    }
+
+    TEST_CASE("build_mesh hidden: icosphere(6) with 81920 faces builds in linear time" * geolab::points(3) *
+              geolab::hidden() * geolab::time_limit(60) *
+              geolab::hint("Find twins by bucketing the directed edges by start vertex (or sorting them), not by "
+                           "scanning all edges for each edge.")) {
+        const PolygonSoup soup = fx::icosphere(6);
+        const auto start = std::chrono::steady_clock::now();
+        const Mesh m = build_mesh(soup);
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        INFO("build_mesh took " << seconds << " s (the reference takes about a hundredth of that limit)");
+        CHECK(seconds < 2.0);
+        validate(m);
+        CHECK(m.n_edges() == 122880);
+    }
+
+}  // TEST_SUITE
+
+TEST_SUITE("Task 2: the lecture's queries") {
+    TEST_CASE(
+        "queries hidden: outgoing_halfedges of a boundary vertex start on the boundary and an isolated vertex has "
+        "none" *
+        geolab::points(2) * geolab::hidden()) {
+        for (const char* name : {"grid(4 x 4)", "grid(6 x 6) with two holes", "tetrahedron + isolated vertex"}) {
+            const Fixture f = fixture(name);
+            INFO(describe(f));
+            const Mesh m = build_valid(f);
+            const auto on_boundary = boundary_vertices(f.soup);
+            for (Vertex v : m.vertices()) {
+                CAPTURE(v);
+                const auto out = outgoing_halfedges(m, v);
+                if (m.is_isolated(v)) {
+                    CHECK(out.empty());
+                    continue;
+                }
+                REQUIRE(!out.empty());
+                int n_boundary = 0;
+                for (Halfedge h : out) n_boundary += m.is_boundary(h);
+                CHECK(n_boundary == (on_boundary[v.idx] ? 1 : 0));
+                CHECK(m.is_boundary(out.front()) == bool(on_boundary[v.idx]));
+            }
+        }
+    }
+
+}  // TEST_SUITE
+
+TEST_SUITE("Task 3: topology") {
+    TEST_CASE("topology hidden: cow model is a closed sphere" * geolab::points(2) * geolab::hidden() *
+              geolab::time_limit(60)) {
+        const PolygonSoup soup = load_model("cow");
+        const Mesh m = build_valid(soup, "cow");
+        const int chi = int(soup.n_vertices()) - int(undirected_edges(soup).size()) + int(soup.n_faces());
+        CHECK(euler_characteristic(m) == chi);
+        CHECK(int(boundary_loops(m).size()) == count_boundary_loops(soup));
+        CHECK(connected_components(m).count == 1);
+        CHECK(genus(m) == (2 - chi - count_boundary_loops(soup)) / 2);
+        check_valence_histogram(m, soup);
+    }
+
+    TEST_CASE("topology hidden: lion model matches brute force topology" * geolab::points(2) * geolab::hidden() *
+              geolab::time_limit(60)) {
+        const PolygonSoup soup = load_model("lion");
+        const Mesh m = build_valid(soup, "lion");
+        const int chi = int(soup.n_vertices()) - int(undirected_edges(soup).size()) + int(soup.n_faces());
+        CHECK(euler_characteristic(m) == chi);
+        CHECK(int(boundary_loops(m).size()) == count_boundary_loops(soup));
+        const auto roots = component_roots(soup);
+        CHECK(connected_components(m).count == int(std::set<std::uint32_t>(roots.begin(), roots.end()).size()));
+        check_valence_histogram(m, soup);
+    }
+
+    TEST_CASE("topology hidden: double torus model has genus 2" * geolab::points(2) * geolab::hidden() *
+              geolab::time_limit(60)) {
+        const PolygonSoup soup = load_model("double-torus-example");
+        const Mesh m = build_valid(soup, "double-torus-example");
+        CHECK(boundary_loops(m).empty());
+        CHECK(euler_characteristic(m) == -2);
+        CHECK(genus(m) == 2);
+    }
+
+}  // TEST_SUITE
+
+TEST_SUITE("Task 4: geometry") {
+    TEST_CASE("geometry hidden: torus normals point away from the core circle and areas add up" * geolab::points(2) *
+              geolab::hidden()) {
+        const double R = 1.0, r = 0.35;
+        const PolygonSoup soup = fx::torus(24, 12, R, r, true);
+        const Mesh m = build_valid(soup, "torus(24, 12)");
+        auto core_direction = [&](const glm::dvec3& p) {  // unit vector from the nearest core point to p
+            const glm::dvec3 core = R * glm::normalize(glm::dvec3(p.x, p.y, 0.0));
+            return glm::normalize(p - core);
+        };
+        double area = 0, ref_area = 0;
+        for (Face f : m.faces()) {
+            auto t = soup.face(f.idx);
+            const glm::dvec3 c = (soup.positions[t[0]] + soup.positions[t[1]] + soup.positions[t[2]]) / 3.0;
+            CAPTURE(f);
+            CHECK(glm::dot(face_normal(m, f), core_direction(c)) > 0.9);
+            area += face_area(m, f);
+            ref_area += 0.5 * glm::length(glm::cross(soup.positions[t[1]] - soup.positions[t[0]],
+                                                     soup.positions[t[2]] - soup.positions[t[0]]));
+        }
+        CHECK(area == doctest::Approx(ref_area).epsilon(1e-12));
+        const auto ref = reference_vertex_normals(soup);
+        for (Vertex v : m.vertices()) {
+            CAPTURE(v);
+            CHECK(glm::length(vertex_normal(m, v) - ref[v.idx]) < 1e-9);
+            CHECK(glm::dot(vertex_normal(m, v), core_direction(m.position(v))) > 0.99);
+        }
+    }
+
+}  // TEST_SUITE
+
+TEST_SUITE("Task 5: smoothing") {
+    TEST_CASE("smoothing hidden: several iterations on open and closed meshes match repeated Jacobi steps" *
+              geolab::points(3) * geolab::hidden()) {
+        for (const char* name : {"torus(8 x 6 triangles)", "grid(6 x 6) with two holes", "open box (5 quads)",
+                                 "tetrahedron + isolated vertex", "house (quad + triangle)"}) {
+            const Fixture f = fixture(name);
+            INFO(describe(f));
+            Mesh m = build_valid(f);
+            laplacian_smoothing(m, 0.3, 4);
+            auto ref = f.soup.positions;
+            for (int i = 0; i < 4; ++i) ref = reference_smoothing_step(f.soup, ref, 0.3);
+            const double tol = 1e-12 * scale_of(f.soup.positions);
+            for (Vertex v : m.vertices()) {
+                CAPTURE(v);
+                INFO("expected " << str(ref[v.idx]) << ", got " << str(m.position(v)));
+                CHECK(glm::length(m.position(v) - ref[v.idx]) <= tol);
+            }
+        }
+    }
+
+}  // TEST_SUITE

@@ -1,0 +1,94 @@
+// Lab 01, Task 5: uniform Laplacian smoothing (handout §7).
+#include "helpers.hpp"
+
+using namespace lab01;
+
+namespace {
+double max_distance(const std::vector<glm::dvec3>& a, const std::vector<glm::dvec3>& b) {
+    double d = 0;
+    for (std::size_t i = 0; i < a.size(); ++i) d = std::max(d, glm::length(a[i] - b[i]));
+    return d;
+}
+}  // namespace
+
+TEST_SUITE("Task 5: smoothing") {
+    TEST_CASE("smoothing: one step on an octahedron with a raised top matches the hand computation" *
+              geolab::points(4) *
+              geolab::hint("Compute every L(v) from the OLD positions (keep a copy), then move: v + t (mean of the "
+                           "neighbours - v). Moving vertices one by one in place gives different numbers.")) {
+        // Vertices +-x (0, 1), +-y (2, 3), +-z (4, 5), all of valence 4; the top is raised to (0,0,2). With t = 1/2:
+        //   top:    mean of the equator = 0                    -> (0,0,2) + (0 - (0,0,2))/2      = (0,0,1)
+        //   +x:     mean of +-y, top, bottom = (0,0,0.25)      -> (1,0,0) + ((0,0,.25)-(1,0,0))/2 = (0.5,0,0.125)
+        //   bottom: mean of the equator = 0                    -> (0,0,-0.5)
+        PolygonSoup soup = octahedron();
+        soup.positions[4] = {0, 0, 2};
+        INFO(mesh_to_string(soup));
+        Mesh m = build_valid(soup, "octahedron");
+        laplacian_smoothing(m, 0.5);
+        const std::vector<glm::dvec3> expect = {{0.5, 0, 0.125},  {-0.5, 0, 0.125}, {0, 0.5, 0.125},
+                                                {0, -0.5, 0.125}, {0, 0, 1},        {0, 0, -0.5}};
+        for (Vertex v : m.vertices()) {
+            CAPTURE(v);
+            INFO("expected " << str(expect[v.idx]) << ", got " << str(m.position(v)));
+            CHECK(glm::length(m.position(v) - expect[v.idx]) < 1e-12);
+        }
+    }
+
+    TEST_CASE("smoothing: t = 0 changes nothing and bad arguments throw std::invalid_argument" * geolab::points(2) *
+              geolab::hint("Check t in [0, 1] (NaN is not) and iterations >= 0 before anything else.")) {
+        const PolygonSoup soup = fx::icosphere(1);
+        Mesh m = build_valid(soup, "icosphere(1)");
+        laplacian_smoothing(m, 0.0, 3);
+        CHECK(m.positions() == soup.positions);
+        laplacian_smoothing(m, 0.7, 0);
+        CHECK(m.positions() == soup.positions);
+        for (double t : {-0.1, 1.5, std::nan("")}) {
+            CAPTURE(t);
+            CHECK_THROWS_AS(laplacian_smoothing(m, t), std::invalid_argument);
+        }
+        CHECK_THROWS_AS(laplacian_smoothing(m, 0.5, -1), std::invalid_argument);
+        CHECK(m.positions() == soup.positions);
+    }
+
+    TEST_CASE(
+        "smoothing: a jittered flat grid stays flat and its boundary does not move" * geolab::points(2) *
+        geolab::hint("Skip boundary vertices (mesh.is_boundary(v)); each interior vertex moves toward the mean of "
+                     "its neighbours.")) {
+        PolygonSoup soup = fx::grid(6, 6);
+        const auto on_boundary = boundary_vertices(soup);
+        for (std::size_t v = 0; v < soup.n_vertices(); ++v)
+            if (!on_boundary[v]) soup.positions[v] += 0.04 * glm::dvec3(std::sin(3.0 * v), std::cos(5.0 * v), 0.0);
+        Mesh m = build_valid(soup, "jittered grid(6, 6)");
+        laplacian_smoothing(m, 0.5, 3);
+        auto ref = soup.positions;
+        for (int i = 0; i < 3; ++i) ref = reference_smoothing_step(soup, ref, 0.5);
+        for (Vertex v : m.vertices()) {
+            CAPTURE(v);
+            INFO((on_boundary[v.idx] ? "boundary vertex" : "interior vertex")
+                 << ": expected " << str(ref[v.idx]) << ", got " << str(m.position(v)));
+            CHECK(m.position(v).z == 0.0);
+            if (on_boundary[v.idx]) CHECK(m.position(v) == soup.positions[v.idx]);
+            CHECK(glm::length(m.position(v) - ref[v.idx]) < 1e-12);
+        }
+    }
+
+    TEST_CASE("smoothing: a sphere keeps its centroid and shrinks" * geolab::points(3) *
+              geolab::hint("Uniform Laplacian smoothing moves every vertex toward the mean of its neighbours: a closed "
+                           "convex surface shrinks; a symmetric one keeps its centre.")) {
+        const PolygonSoup soup = fx::icosphere(2);
+        Mesh m = build_valid(soup, "icosphere(2)");
+        laplacian_smoothing(m, 0.5, 2);
+        const auto ref = reference_smoothing_step(soup, reference_smoothing_step(soup, soup.positions, 0.5), 0.5);
+        glm::dvec3 centroid(0.0);
+        double mean_radius = 0;
+        for (Vertex v : m.vertices()) centroid += m.position(v), mean_radius += glm::length(m.position(v));
+        centroid /= double(m.n_vertices());
+        mean_radius /= double(m.n_vertices());
+        INFO("centroid " << str(centroid) << ", mean radius " << mean_radius << " (was 1)");
+        CHECK(glm::length(centroid) < 1e-12);
+        CHECK(mean_radius < 0.999);
+        CHECK(mean_radius > 0.9);
+        CHECK(max_distance(m.positions(), ref) < 1e-12);
+    }
+
+}  // TEST_SUITE
