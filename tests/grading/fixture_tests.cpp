@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include "geolab/errors.hpp"
+#include "geolab/soup.hpp"
 #include "geolab/grading/test.hpp"
 
 TEST_SUITE("fixtures") {
@@ -55,4 +56,11 @@ TEST_CASE("allocates without bound" * geolab::points(1)) {
 TEST_CASE("throws an unexpected exception" * geolab::points(1)) { throw std::runtime_error("boom"); }
 TEST_CASE("hidden and passes" * geolab::points(2) * geolab::hidden()) { CHECK(true); }
 TEST_CASE("ungraded") { CHECK(true); }
+TEST_CASE("attaches a figure") {
+    geolab::PolygonSoup tri;
+    tri.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    tri.add_face({0, 1, 2});
+    geolab::attach_mesh_figure("triangle", tri, tri);
+    CHECK(true);
+}
 }

@@ -1,5 +1,6 @@
 // Tests of the grader itself: every misbehaving fixture case costs only its own points and is classified
 // correctly; the reports are well-formed; the generator rejects bad markers.
+#include <filesystem>
 #include <fstream>
 #include <map>
 
@@ -24,6 +25,7 @@ const geolab::grading::LabReport& fixture_report() {
         opt.timeout_s = 10;
         opt.memory_mb = 1024;
         opt.output_cap = 256 << 10;
+        opt.figure_dir = std::filesystem::absolute("grader_test_figures");
         return geolab::grading::grade_program("fixtures", "student", GEOLAB_FIXTURE_PROGRAM, opt);
     }();
     return report;
@@ -41,7 +43,7 @@ const geolab::grading::TestResult& result(const std::string& name) {
 TEST_CASE("the grader lists every fixture with its metadata") {
     const auto& rep = fixture_report();
     REQUIRE(rep.error == "");
-    CHECK(rep.results.size() == 15);
+    CHECK(rep.results.size() == 16);
     CHECK(result("hidden and passes").info.hidden);
     CHECK(result("hidden and passes").info.points == 2);
     CHECK(result("fails an assertion").info.hint == "look at the sum");
@@ -66,6 +68,7 @@ TEST_CASE("each misbehaviour is isolated and classified") {
         {"throws an unexpected exception", Status::failed},
         {"hidden and passes", Status::passed},
         {"ungraded", Status::passed},
+        {"attaches a figure", Status::passed},
     };
     for (const auto& [name, status] : expected) {
         const auto& r = result(name);
@@ -89,13 +92,15 @@ TEST_CASE("messages say what happened") {
 }
 
 TEST_CASE("reports: results.json and JUnit are written and well-formed") {
-    const std::string json_path = "grader_test_results.json", junit_path = "grader_test_junit.xml";
+    const auto tmp = std::filesystem::temp_directory_path();
+    const std::string json_path = (tmp / "geolab_grader_test_results.json").string(),
+                      junit_path = (tmp / "geolab_grader_test_junit.xml").string();
     geolab::grading::write_gradescope_json(json_path, {fixture_report()});
     std::ifstream f(json_path);
     auto j = nlohmann::json::parse(f);
     CHECK(j["score"] == 4);
     CHECK(j["max_score"] == 15);
-    REQUIRE(j["tests"].size() == 15);
+    REQUIRE(j["tests"].size() == 16);
     for (const auto& t : j["tests"]) {
         CHECK(t.contains("name"));
         CHECK(t.contains("number"));
@@ -107,7 +112,14 @@ TEST_CASE("reports: results.json and JUnit are written and well-formed") {
     std::ifstream x(junit_path);
     std::string xml((std::istreambuf_iterator<char>(x)), {});
     CHECK(xml.find("<testsuites>") != std::string::npos);
-    CHECK(xml.find("tests=\"15\"") != std::string::npos);
+    CHECK(xml.find("tests=\"16\"") != std::string::npos);
+}
+
+TEST_CASE("a test can attach a picture, which the grader collects") {
+    const auto& r = result("attaches a figure");
+    REQUIRE(r.figures.size() == 1);
+    CHECK(std::filesystem::exists(r.figures[0]));
+    CHECK(r.figures[0].find(".png") != std::string::npos);
 }
 
 TEST_CASE("the generator strips solution blocks and rejects bad markers") {

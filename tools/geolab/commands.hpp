@@ -7,6 +7,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "geolab/grading/submission.hpp"
+
 namespace geolab::cli {
 
 //! The labs this build knows, e.g. {"01_halfedge", "09_spherical_dc"}.
@@ -18,9 +20,19 @@ std::filesystem::path bin_dir();
 //! The course tree this program was built from.
 std::filesystem::path source_dir();
 
+//! The options to grade a submission of `lab` in work folder number `job` under `work_dir` (default
+//! BUILD/grading): the course tree and build this program belongs to.
+grading::SubmissionOptions submission_options(const std::string& lab, const std::string& work_dir, int job);
+//! Write results.json (the submission's summary first in its output) and JUnit XML, where asked (non-empty).
+void write_submission_reports(const grading::SubmissionReport& rep, const std::string& json, const std::string& junit);
+
 void add_grade(CLI::App& app, int& status);
+void add_grade_all(CLI::App& app, int& status);
+void add_gradescope(CLI::App& app, int& status);
 void add_release(CLI::App& app, int& status);
 void add_demo(CLI::App& app, int& status);
 void add_info(CLI::App& app, int& status);
+void add_contour(CLI::App& app, int& status);
+void add_table1(CLI::App& app, int& status);
 
 }  // namespace geolab::cli

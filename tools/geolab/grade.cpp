@@ -8,6 +8,7 @@
 #include "geolab/config.hpp"
 #include "geolab/grading/report.hpp"
 #include "geolab/grading/runner.hpp"
+#include "geolab/grading/submission.hpp"
 
 namespace geolab::cli {
 namespace {
@@ -21,6 +22,8 @@ struct GradeArgs {
     std::size_t memory_mb = 4096;
     bool student_view = false;
     bool quiet = false;
+    std::string submission, lab, work_dir, forbidden, figures;
+    bool asan = false, no_course_build = false;
 };
 
 // CI's honesty checks: the reference scores 100%; untouched stubs score 0 and every graded test fails cleanly.
@@ -56,7 +59,36 @@ bool check_expectation(const std::vector<grading::LabReport>& reports, const std
     return ok;
 }
 
+// geolab grade --submission DIR|ZIP --lab NN: one student's files against the full course (hidden tests too).
+int run_submission(const GradeArgs& a) {
+    if (a.lab.empty()) throw std::runtime_error("--submission needs --lab NN (the lab the submission is for)");
+    grading::SubmissionOptions opt = submission_options(resolve_lab(a.lab), a.work_dir, 0);
+    opt.asan = a.asan;
+    opt.build_course = !a.no_course_build;
+    opt.forbidden = a.forbidden;
+    if (!a.figures.empty()) opt.run.figure_dir = std::filesystem::absolute(a.figures);
+    opt.run.timeout_s = a.timeout;
+    opt.run.memory_mb = a.memory_mb;
+    opt.run.jobs = a.jobs > 0 ? a.jobs : std::max(1u, std::thread::hardware_concurrency());
+    if (!a.quiet) std::cerr << "grading " << a.submission << " (lab " << opt.lab << ") ...\n";
+    const auto rep = grading::grade_submission(a.submission, opt);
+    std::cout << rep.summary();
+    grading::print_console(std::cout, {rep.lab},
+                           a.student_view ? grading::HiddenPolicy::name_points : grading::HiddenPolicy::show,
+                           ::isatty(1));
+    write_submission_reports(rep, a.json, a.junit);
+    if (!a.json.empty()) std::cout << "results.json written to " << a.json << "\n";
+    if (!a.junit.empty()) std::cout << "JUnit XML written to " << a.junit << "\n";
+    if (rep.status == grading::SubmissionStatus::grader_error) {
+        std::cerr << "geolab: grading " << a.submission << " failed: " << rep.error << "\n";
+        return 2;
+    }
+    return 0;
+}
+
 int run_grade(const GradeArgs& a) {
+    if (!a.submission.empty()) return run_submission(a);
+    if (!a.lab.empty()) throw std::runtime_error("--lab is for --submission; to grade this tree say: geolab grade " + a.lab);
     std::vector<std::string> labs;
     for (const auto& l : a.labs) labs.push_back(resolve_lab(l));
     if (labs.empty()) labs = known_labs();
@@ -108,6 +140,25 @@ int run_grade(const GradeArgs& a) {
 
 }  // namespace
 
+grading::SubmissionOptions submission_options(const std::string& lab, const std::string& work_dir, int job) {
+    grading::SubmissionOptions opt;
+    opt.lab = lab;
+    opt.course_root = source_dir();
+    opt.build_dir = bin_dir().parent_path();
+    const std::filesystem::path base = work_dir.empty() ? opt.build_dir / "grading" : std::filesystem::path(work_dir);
+    opt.work_dir = base / lab.substr(0, 2) / ("job" + std::to_string(job));
+    return opt;
+}
+
+void write_submission_reports(const grading::SubmissionReport& rep, const std::string& json, const std::string& junit) {
+    if (!json.empty()) {
+        std::string preamble = rep.summary();
+        if (!preamble.empty()) preamble += "\n";
+        grading::write_gradescope_json(json, {rep.lab}, preamble);
+    }
+    if (!junit.empty()) grading::write_junit(junit, {rep.lab});
+}
+
 void add_grade(CLI::App& app, int& status) {
     auto a = std::make_shared<GradeArgs>();
     auto* cmd = app.add_subcommand("grade", "Run the graded tests of labs (all by default), one process per test");
@@ -120,6 +171,15 @@ void add_grade(CLI::App& app, int& status) {
     cmd->add_option("--memory-mb", a->memory_mb, "Address-space limit per test, MiB")->capture_default_str();
     cmd->add_flag("--student-view", a->student_view, "Withhold the messages of hidden tests, as students see it");
     cmd->add_flag("--quiet,-q", a->quiet, "No progress lines");
+    cmd->add_option("--submission", a->submission,
+                    "Grade a student's submission (a folder or a .zip) against the full course, hidden tests included");
+    cmd->add_option("--lab", a->lab, "With --submission: the lab it is for (01, 1 or 01_halfedge)");
+    cmd->add_flag("--asan", a->asan, "With --submission: also run with AddressSanitizer + UBSan (an ungraded item)");
+    cmd->add_option("--work-dir", a->work_dir, "With --submission: the grading work folder (default: BUILD/grading)");
+    cmd->add_option("--forbidden", a->forbidden, "With --submission: the forbidden-calls list (default labs/NN/forbidden.txt)");
+    cmd->add_option("--figures", a->figures, "With --submission: write the tests' pictures (attach_mesh_figure) here");
+    cmd->add_flag("--no-course-build", a->no_course_build,
+                  "With --submission: do not bring the course's test program up to date first");
     cmd->add_option("--expect", a->expect, "CI check: 'full' (every graded test passes) or 'zero' (every graded test "
                                            "fails cleanly: failed or not implemented, never crashed or timed out)")
         ->check(CLI::IsMember({"full", "zero"}));

@@ -42,9 +42,13 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     int status = 0;
     geolab::cli::add_grade(app, status);
+    geolab::cli::add_grade_all(app, status);
+    geolab::cli::add_gradescope(app, status);
     geolab::cli::add_release(app, status);
     geolab::cli::add_demo(app, status);
     geolab::cli::add_info(app, status);
+    geolab::cli::add_contour(app, status);
+    geolab::cli::add_table1(app, status);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -1,6 +1,7 @@
 #include "geolab/grading/release.hpp"
 
 #include <algorithm>
+#include <cstdlib>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -44,6 +45,57 @@ std::vector<fs::path> solution_labs(const fs::path& root) {
         if (fs::is_directory(e.path() / "src")) labs.push_back(e.path());
     std::sort(labs.begin(), labs.end());
     return labs;
+}
+
+// The meaningful lines of a text, trimmed (no blank lines, no lone braces): what the leak scan compares.
+std::vector<std::pair<std::string, int>> meaningful_lines(const std::string& text) {
+    std::vector<std::pair<std::string, int>> out;
+    std::istringstream in(text);
+    std::string line;
+    for (int n = 1; std::getline(in, line); ++n) {
+        const std::string t = trim(line);
+        if (t.size() >= 4) out.push_back({t, n});
+    }
+    return out;
+}
+
+// Three consecutive meaningful lines as one key.
+std::string shingle(const std::vector<std::pair<std::string, int>>& l, std::size_t i) {
+    return l[i].first + "\n" + l[i + 1].first + "\n" + l[i + 2].first;
+}
+
+// Every run of three consecutive meaningful lines inside a solution block: the leak scan's needles. A single
+// line (a loop header) is too common to prove a leak; three in a row are an answer.
+std::set<std::string> solution_shingles(const fs::path& root) {
+    std::set<std::string> needles;
+    for (const auto& sol : solution_labs(root))
+        for (const auto& e : fs::recursive_directory_iterator(sol)) {
+            if (!e.is_regular_file()) continue;
+            std::istringstream in(read_file(e.path()));
+            std::string line, block;
+            bool open = false;
+            while (std::getline(in, line)) {
+                const std::string t = trim(line);
+                if (t.rfind(begin_marker, 0) == 0) {
+                    open = true;
+                    block.clear();
+                } else if (t.rfind(end_marker, 0) == 0) {
+                    open = false;
+                    auto l = meaningful_lines(block);
+                    for (std::size_t i = 0; i + 2 < l.size(); ++i) needles.insert(shingle(l, i));
+                } else if (open && t.rfind(stub_prefix, 0) != 0) {
+                    block += line + "\n";
+                }
+            }
+        }
+    // What the generated stubs keep (given code) is public: never a leak.
+    for (const auto& sol : solution_labs(root))
+        for (const auto& e : fs::recursive_directory_iterator(sol)) {
+            if (!e.is_regular_file()) continue;
+            auto l = meaningful_lines(strip_solutions(read_file(e.path()), e.path().string()));
+            for (std::size_t i = 0; i + 2 < l.size(); ++i) needles.erase(shingle(l, i));
+        }
+    return needles;
 }
 
 }  // namespace
@@ -114,13 +166,15 @@ std::vector<LabDiff> generate_labs(const fs::path& root, bool write) {
     return diffs;
 }
 
-std::vector<fs::path> make_release(const fs::path& root, const fs::path& out) {
+std::vector<fs::path> make_release(const fs::path& root, const fs::path& out, bool git_init) {
     if (fs::exists(out) && !fs::is_empty(out)) throw std::runtime_error(out.string() + ": exists and is not empty");
     // What never goes to students.
     auto excluded = [](const fs::path& rel) {
         const std::string first = rel.begin()->string();
         if (first == "solutions" || first == ".git" || first.rfind("build", 0) == 0 || first == "out") return true;
         if (rel.string().rfind("data/models", 0) == 0) return true;
+        // The grader's adversarial suite is the reference with twists: answers, so instructors only.
+        if (rel.string().rfind("tests/grading/adversarial", 0) == 0) return true;
         for (const auto& part : rel)
             if (part == "hidden") return true;
         return false;
@@ -143,10 +197,29 @@ std::vector<fs::path> make_release(const fs::path& root, const fs::path& out) {
     generate_labs(out, true);
     fs::remove_all(out / "solutions");
     // Leak scan: no marker and no line that exists only inside a solution block may appear in the release.
+    const auto answers = solution_shingles(root);
     for (const auto& rel : written) {
         const std::string text = read_file(out / rel);
         if (rel.begin()->string() == "labs" && text.find(begin_marker) != std::string::npos)
             throw std::runtime_error((out / rel).string() + ": contains a solution marker: the release would leak answers");
+        // Binary files are skipped; so are the released tests, whose brute-force checks may share a few lines
+        // with a solution on purpose (the instructor published them).
+        if (text.find('\0') != std::string::npos || rel.begin()->string() == "tests") continue;
+        const auto l = meaningful_lines(text);
+        for (std::size_t i = 0; i + 2 < l.size(); ++i)
+            if (answers.count(shingle(l, i)))
+                throw std::runtime_error((out / rel).string() + ":" + std::to_string(l[i].second) +
+                                         ": holds three lines of a reference solution ('" + l[i].first +
+                                         "' ...): the release would leak answers");
+    }
+    if (git_init) {
+        // A fresh repository with one commit: the students' history starts here, with no trace of answers.
+        const std::string q = "'" + out.string() + "'";
+        if (std::system("git --version >/dev/null 2>&1") == 0) {
+            const std::string cmd = "cd " + q + " && git init -q && git add -A && git -c user.name=geolab -c "
+                                    "user.email=geolab@localhost commit -q -m 'Student release' >/dev/null 2>&1";
+            if (std::system(cmd.c_str()) != 0) throw std::runtime_error(out.string() + ": git init/commit failed");
+        }
     }
     return written;
 }

@@ -32,6 +32,7 @@ std::string test_output(const TestResult& r, bool with_output) {
     os << to_string(r.status) << " (" << std::fixed << std::setprecision(2) << r.seconds << " s)\n";
     for (const auto& m : r.messages) os << m << "\n";
     if (r.status != Status::passed && !r.info.hint.empty()) os << "Hint: " << r.info.hint << "\n";
+    for (const auto& f : r.figures) os << "Figure: " << f << "\n";
     if (with_output && r.status != Status::passed && !r.output.empty()) {
         std::string out = r.output.size() > 4000 ? r.output.substr(0, 4000) + "\n...(cut)" : r.output;
         os << "--- output ---\n" << out << "\n";
@@ -90,6 +91,7 @@ void print_console(std::ostream& os, const std::vector<LabReport>& labs, HiddenP
             if (r.status != Status::passed && !withhold) {
                 os << "        " << status << ": " << first_message(r) << "\n";
                 if (!r.info.hint.empty()) os << "        hint: " << r.info.hint << "\n";
+                for (const auto& f : r.figures) os << "        figure: " << f << "\n";
             }
         }
         // Totals per task: partial credit is visible at a glance.
@@ -114,10 +116,12 @@ void print_console(std::ostream& os, const std::vector<LabReport>& labs, HiddenP
     }
 }
 
-void write_gradescope_json(const std::filesystem::path& file, const std::vector<LabReport>& labs) {
+void write_gradescope_json(const std::filesystem::path& file, const std::vector<LabReport>& labs,
+                           const std::string& preamble) {
     nlohmann::json tests = nlohmann::json::array();
     double score = 0, max_score = 0, seconds = 0;
     std::ostringstream summary;
+    summary << preamble;
     for (std::size_t l = 0; l < labs.size(); ++l) {
         const auto& lab = labs[l];
         seconds += lab.seconds;

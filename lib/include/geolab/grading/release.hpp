@@ -27,8 +27,11 @@ struct LabDiff {
 std::vector<LabDiff> generate_labs(const std::filesystem::path& root, bool write);
 
 //! Write the student release of the course tree `root` into `out` (which must not exist or be empty): no
-//! solutions/, no hidden tests, no build or model folders, labs/ regenerated; then scan it for leaks.
-//! \return the files written. \throw std::runtime_error on a leak (marker or solution text found) or I/O error.
-std::vector<std::filesystem::path> make_release(const std::filesystem::path& root, const std::filesystem::path& out);
+//! solutions/, no hidden tests, no adversarial grader cases, no build or model folders, labs/ regenerated; then
+//! scan every file for leaks (a marker, or any line that exists only inside a solution block). With `git_init`
+//! and git available, `out` becomes a fresh repository with one commit (no history to leak answers from).
+//! \return the files written. \throw std::runtime_error on a leak (file:line named) or I/O error.
+std::vector<std::filesystem::path> make_release(const std::filesystem::path& root, const std::filesystem::path& out,
+                                                bool git_init = true);
 
 }  // namespace geolab::grading

@@ -20,7 +20,9 @@ void print_console(std::ostream& os, const std::vector<LabReport>& labs, HiddenP
 
 //! Gradescope's results.json (score, max_score, execution_time, output, tests[] with name, number, score,
 //! max_score, status, output, visibility, tags). Hidden tests get visibility "after_published".
-void write_gradescope_json(const std::filesystem::path& file, const std::vector<LabReport>& labs);
+//! `preamble` goes first in the top-level output (e.g. the compiler's messages of a submission).
+void write_gradescope_json(const std::filesystem::path& file, const std::vector<LabReport>& labs,
+                           const std::string& preamble = "");
 
 //! JUnit XML: one <testsuite> per lab and variant, one <testcase> per test (failure / error / skipped).
 void write_junit(const std::filesystem::path& file, const std::vector<LabReport>& labs);

@@ -38,7 +38,25 @@ struct TestResult {
     double score = 0;
     std::vector<std::string> messages;  //!< failure messages (assertions, exceptions, the reason for crashes)
     std::string output;                 //!< what the test printed (stdout + stderr), capped
+    std::vector<std::string> figures;   //!< pictures the test attached (paths, see attach_mesh_figure)
     double seconds = 0;
+};
+
+//! Extra isolation for untrusted code (grading a submission). Everything here needs root and is skipped
+//! silently where the system refuses it (not root, no namespaces): the per-test supervisor, the time, memory,
+//! output and process limits above work for everyone.
+struct Sandbox {
+    bool drop_privileges = false;  //!< when root: run each test as its own unused uid/gid (see uid_pool_*)
+    unsigned uid_pool_first = 61000;  //!< uids leased to running tests, one per running test (flock'ed)
+    unsigned uid_pool_size = 512;
+    std::size_t max_processes = 64;  //!< RLIMIT_NPROC of a test run as its own uid (threads count too)
+    bool no_network = true;          //!< unshare(CLONE_NEWNET) in the child (ignored when not permitted)
+    std::vector<std::filesystem::path> hide;  //!< folders made empty for the test (tmpfs in a mount namespace)
+    std::filesystem::path workdir;            //!< the test's working folder (a fresh folder per test under it)
+    //! Called with the fresh working folder (already owned by the test's uid) before the child starts, and
+    //! after it ended, before the folder is removed: to put inputs in and take outputs out.
+    std::function<void(const std::filesystem::path& dir, unsigned uid)> prepare;
+    std::function<void(const std::filesystem::path& dir)> collect;
 };
 
 //! Limits and parallelism of a grading run.
@@ -48,6 +66,11 @@ struct RunOptions {
     std::size_t output_cap = 1 << 20;           //!< bytes of output before the test is killed
     std::size_t file_size_mb = 256;             //!< largest file a test may write (RLIMIT_FSIZE)
     int jobs = 2;                               //!< tests run at once
+    Sandbox sandbox;                            //!< extra isolation for untrusted code
+    std::vector<std::string> env;               //!< extra NAME=value entries for the test's environment
+    //! Where tests' pictures go (attach_mesh_figure). Non-empty: each test gets GEOLAB_FIGURE_DIR (its own
+    //! working folder when sandboxed) and its PNGs are moved here; TestResult::figures names them.
+    std::filesystem::path figure_dir;
     std::function<void(const TestResult&, std::size_t done, std::size_t total)> on_result;  //!< progress
 };
 
@@ -61,6 +84,21 @@ struct LabReport {
     double score() const;
     double max_score() const;
 };
+
+//! What one sandboxed command (a compiler, a linker) did.
+struct CommandResult {
+    int exit_code = -1;  //!< -1: killed (signal or time limit)
+    bool timed_out = false;
+    std::string output;  //!< stdout + stderr, capped
+    double seconds = 0;
+};
+
+//! Run `argv` (argv[0] an absolute path) in a child with the limits and sandbox of `opt` and a wall-clock
+//! limit; the whole process tree is killed at the end. Used for compiling untrusted code.
+CommandResult run_command(const std::vector<std::string>& argv, double timeout_s, const RunOptions& opt);
+
+//! Whether this process can drop privileges for tests (it runs as root).
+bool can_drop_privileges();
 
 //! The test cases of `program` (runs `program --geolab-list` in a child with the same limits).
 //! \throw std::runtime_error naming the program and the reason if it cannot be listed.

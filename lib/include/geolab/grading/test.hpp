@@ -13,6 +13,7 @@
 
 #include <map>
 #include <string>
+#include <vector>
 
 namespace geolab {
 
@@ -29,7 +30,18 @@ std::map<std::string, TestMeta>& test_registry();
 
 namespace detail {
 TestMeta& meta_for(const doctest::detail::TestCase& tc);
-}
+//! The pictures attached by the running test (paths), sent to the grader with the verdict.
+std::vector<std::string>& attached_figures();
+//! The name of the test case running now (empty outside one).
+std::string& current_test();
+}  // namespace detail
+
+struct PolygonSoup;
+
+//! Attach a picture to the running test: the student's mesh next to the reference, rendered headless into
+//! $GEOLAB_FIGURE_DIR/<test>-<name>.png. Does nothing (and costs nothing) unless the grader set
+//! GEOLAB_FIGURE_DIR; never fails the test (a rendering problem is silently skipped). Reports link the file.
+void attach_mesh_figure(const std::string& name, const PolygonSoup& student, const PolygonSoup& reference);
 
 //! The number of points this test is worth.
 struct points {

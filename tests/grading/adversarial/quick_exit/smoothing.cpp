@@ -1,0 +1,17 @@
+// ADVERSARIAL CASE quick_exit: calls std::quick_exit(0) inside the test
+// A modified copy of the lab 01 smoothing.cpp, graded by tests/grading/adversarial/run.sh.
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "geolab/halfedge.hpp"
+#include <cstdlib>
+
+namespace geolab::halfedge {
+
+void laplacian_smoothing(Mesh& mesh, double t, int iterations) {
+    std::quick_exit(0);
+    throw geolab::NotImplemented(__func__);
+}
+
+}  // namespace geolab::halfedge
