@@ -25,7 +25,7 @@ const geolab::grading::LabReport& fixture_report() {
         opt.timeout_s = 10;
         opt.memory_mb = 1024;
         opt.output_cap = 256 << 10;
-        opt.figure_dir = std::filesystem::absolute("grader_test_figures");
+        opt.figure_dir = std::filesystem::temp_directory_path() / "geolab_grader_test_figures";
         return geolab::grading::grade_program("fixtures", "student", GEOLAB_FIXTURE_PROGRAM, opt);
     }();
     return report;
