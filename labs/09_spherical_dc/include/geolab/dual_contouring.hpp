@@ -1,0 +1,536 @@
+#pragma once
+//! \file dual_contouring.hpp
+//! Lab 09 — dual contouring (Ju, Losasso, Schaefer & Warren 2002) on a Cartesian octree and on the spherical-
+//! coordinate octree of Kim et al. (2011) with the stable origin and polar hole filling of J.-H. Kim (2023).
+//!
+//! The pipeline, one task per step (handout docs/labs/09_spherical_dc.md):
+//!   1. Qef::add / Qef::solve / Qef::error                        (qef.cpp)
+//!   2. find_root, find_crossing, find_crossing_arc                (spherical.cpp)
+//!      to_spherical, to_cartesian
+//!   3. build_octree (Cartesian, conservative refinement)          (octree.cpp)
+//!   4. place_vertices (Hermite data + QEF per leaf), simplify     (contour.cpp)
+//!      contour (polygons around minimal sign-changing edges)
+//!   5. minimal_enclosing_sphere (Welzl), correct_origin (eq. 6)   (origin.cpp)
+//!   6. build_spherical_octree                                     (spherical_octree.cpp)
+//!   7. fill_poles (normal and vertical projection)                (poles.cpp)
+//!   dual_contour_cartesian / dual_contour_spherical chain the steps (contour.cpp, spherical_octree.cpp).
+//! Given (not tasks): the Octree data structure (lattice, cached samples, point location), the mesh checks.
+//!
+//! Conventions used throughout:
+//!  - Inside/outside: f(p) ≤ 0 is inside (one tie rule everywhere, `inside(v)` below).
+//!  - Levels: level 0 is the root cell; a cell of level l has 2^l cells per parameter axis at its level; the
+//!    finest level is `max_level` = L, so the finest lattice has N = 2^L cells per axis. This is the same for the
+//!    Cartesian (x, y, z) and the spherical (r, θ, φ) octree: "level L" means 2^L divisions of every parameter.
+//!  - Lattice points: integer coordinates (x, y, z) ∈ [0, N]³ at the finest level; a cell (level l, cell index
+//!    c) has its corners at lattice coordinates (c + {0,1}) · 2^(L−l). In the spherical octree the lattice axes
+//!    are (r, θ, φ): x ↔ r, y ↔ θ, z ↔ φ, and z is taken modulo N (the φ seam).
+//!  - Output meshes are triangle soups, counter-clockwise seen from outside (outward normals).
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <span>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "geolab/field.hpp"
+#include "geolab/soup.hpp"
+
+namespace geolab::dc {
+
+inline constexpr std::uint32_t invalid_index = 0xffffffffu;
+inline constexpr double pi = 3.14159265358979323846;
+
+//! The tie rule of the whole lab: a sample value v is inside when v ≤ 0.
+inline bool inside(double v) { return v <= 0.0; }
+
+// =====================================================================================================================
+// Task 1 — the quadratic error function (handout §2)
+// =====================================================================================================================
+
+//! Q(x) = Σᵢ (nᵢ · (x − pᵢ))² accumulated as AᵀA, Aᵀb, bᵀb (rows of A are nᵢ, bᵢ = nᵢ · pᵢ), plus the mass point
+//! (the average of the pᵢ). Everything in double. Q(x) = xᵀAᵀAx − 2xᵀAᵀb + bᵀb.
+struct Qef {
+    //! AᵀA, symmetric, stored as (xx, xy, xz, yy, yz, zz).
+    double ata[6] = {0, 0, 0, 0, 0, 0};
+    glm::dvec3 atb{0.0};
+    double btb = 0.0;
+    glm::dvec3 mass_sum{0.0};  //!< Σ pᵢ
+    int count = 0;             //!< number of planes added
+
+    //! Add the plane through p with unit normal n (task: AᵀA += n nᵀ, Aᵀb += n (n·p), bᵀb += (n·p)²,
+    //! mass_sum += p, count += 1).
+    void add(const glm::dvec3& p, const glm::dvec3& n);
+    //! Minimise Q about the mass point m: x = m + (AᵀA)⁺ (Aᵀb − AᵀA m), where the pseudo-inverse comes from the
+    //! symmetric eigen-decomposition AᵀA = V Λ Vᵀ and drops every eigenvalue λ < tau · λmax (truncation keeps
+    //! the solution near m in directions the normals do not determine: a plane gives rank 1, an edge rank 2, a
+    //! corner rank 3). tau = 0.01 on eigenvalues of AᵀA is Ju et al.'s 0.1 on the singular values of A.
+    //! \param mass_point if not null, receives m. \param rank if not null, receives the number of eigenvalues kept.
+    //! An empty Qef (count == 0) returns (0,0,0) with rank 0.
+    glm::dvec3 solve(double tau = 0.01, glm::dvec3* mass_point = nullptr, int* rank = nullptr) const;
+    //! Q(x) (≥ 0 up to rounding).
+    double error(const glm::dvec3& x) const;
+
+    // given
+    glm::dvec3 mass_point() const { return count > 0 ? mass_sum / double(count) : glm::dvec3(0.0); }
+    //! Q_this + Q_other (Ju et al.'s simplification adds the children's QEFs).
+    void merge(const Qef& o) {
+        for (int i = 0; i < 6; ++i) ata[i] += o.ata[i];
+        atb += o.atb;
+        btb += o.btb;
+        mass_sum += o.mass_sum;
+        count += o.count;
+    }
+};
+
+// =====================================================================================================================
+// Task 2 — spherical coordinates and edge crossings (handout §3)
+// =====================================================================================================================
+
+//! Spherical coordinates (eq. 4-5 of the paper): r ≥ 0; θ ∈ [0, π] from +Z; φ ∈ [0, 2π) from +X in the XY plane.
+struct Spherical {
+    double r = 0.0, theta = 0.0, phi = 0.0;
+};
+
+//! (r, θ, φ) of p (about the origin 0). θ = atan2(√(x²+y²), z) (accurate near the poles, unlike acos(z/r));
+//! φ = atan2(y, x) wrapped into [0, 2π). Conventions for the degenerate points: r = 0 → (0, 0, 0); on the
+//! z axis φ = 0.
+Spherical to_spherical(const glm::dvec3& p);
+//! x = r sinθ cosφ, y = r sinθ sinφ, z = r cosθ, except that θ == 0 and θ == pi (the double constants) give
+//! sinθ = 0 exactly and cosθ = ±1, so every lattice point on the polar axis maps exactly onto the axis
+//! (step 1 of the paper's hole filling: "clamp the extreme angles to the double value of π").
+glm::dvec3 to_cartesian(const Spherical& s);
+
+//! A non-owning reference to a callable double(double) (like C++26 std::function_ref): no allocation.
+class FunctionRef {
+public:
+    template <class F, class = std::enable_if_t<!std::is_same_v<std::decay_t<F>, FunctionRef>>>
+    FunctionRef(F&& f) : obj_(const_cast<void*>(static_cast<const void*>(&f))), call_(&invoke<std::remove_reference_t<F>>) {}
+    double operator()(double t) const { return call_(obj_, t); }
+
+private:
+    template <class F>
+    static double invoke(void* o, double t) { return (*static_cast<F*>(o))(t); }
+    void* obj_;
+    double (*call_)(void*, double);
+};
+
+//! The parameter t ∈ [0, 1] where g changes from one side to the other, given g0 = g(0) and g1 = g(1) on
+//! different sides (inside(g0) != inside(g1)). Use a bracketing method (bisection, or the Illinois variant of
+//! regula falsi, which is exact in one step on linear g): keep the bracket [t0, t1] with inside(g(t0)) ==
+//! inside(g0), and stop when the bracket is shorter than `tolerance` or when an iterate moves by less than
+//! tolerance/8. At most 100 evaluations of g. \pre inside(g0) != inside(g1), tolerance > 0.
+double find_root(FunctionRef g, double g0, double g1, double tolerance);
+
+//! Hermite data of one edge crossing: the point where f changes sign and the unit normal ∇f/|∇f| there
+//! (if |∇f| = 0, the unit direction from the inside end to the outside end of the edge).
+struct Crossing {
+    glm::dvec3 point{0.0};
+    glm::dvec3 normal{0.0};
+};
+
+//! The crossing of f on the segment [a, b]: p(t) = a + t (b − a), fa = f(a), fb = f(b) (passed in, the octree
+//! has them cached). `tolerance` is relative to the edge: the parameter tolerance for find_root.
+//! \pre inside(fa) != inside(fb).
+Crossing find_crossing(const ScalarField& f, const glm::dvec3& a, const glm::dvec3& b, double fa, double fb,
+                       double tolerance = 1e-7);
+//! The crossing of f on the spherical-coordinate path p(t) = origin + to_cartesian(a + t (b − a)) (each of r,
+//! θ, φ interpolated linearly): a radial segment when only r differs, a θ-arc (meridian) or φ-arc (latitude
+//! circle) when only that angle differs — the curved edges of the spherical octree, not their chords.
+//! \pre inside(fa) != inside(fb).
+Crossing find_crossing_arc(const ScalarField& f, const glm::dvec3& origin, const Spherical& a, const Spherical& b,
+                           double fa, double fb, double tolerance = 1e-7);
+
+// =====================================================================================================================
+// The octree (given data structure)
+// =====================================================================================================================
+
+enum class Coordinates : std::uint8_t { cartesian, spherical };
+
+//! One octree node. Children of node n are nodes[n.first_child + c], c = cx + 2 cy + 4 cz (cx, cy, cz ∈ {0,1} the
+//! lower/upper half of each axis), so the child cell index is 2 · (x, y, z) + (cx, cy, cz).
+struct OctreeNode {
+    std::uint32_t x = 0, y = 0, z = 0;             //!< cell index at `level` (spherical: r, θ, φ)
+    std::uint32_t first_child = invalid_index;     //!< invalid_index for a leaf
+    std::uint32_t vertex = invalid_index;          //!< index into Octree::vertices (leaves with a dual vertex)
+    std::uint8_t level = 0;
+    bool is_leaf() const { return first_child == invalid_index; }
+};
+
+//! A dual vertex: its position and the QEF it minimises (kept for simplification and for tests).
+struct DualVertex {
+    glm::dvec3 position{0.0};
+    Qef qef;
+};
+
+//! A sparse map from lattice points to values of T, stored as dense blocks of 4×4×4 slots (initialised to `empty`)
+//! found through an open-addressing hash of the block coordinates. Octree traversals visit neighbouring lattice
+//! points together, so most look-ups stay in the last block used (far faster than hashing every point).
+//! Used for the field samples (T = double, empty = NaN) and free for other per-lattice-point data.
+template <class T>
+class BlockGrid {
+public:
+    explicit BlockGrid(T empty = T{}) : empty_(empty) {}
+    //! The slot of lattice point q (coordinates in [0, 2^21)); `empty` until written.
+    T& slot(glm::ivec3 q) {
+        const std::uint64_t key = (std::uint64_t(std::uint32_t(q.x) >> 2) << 42) |
+                                  (std::uint64_t(std::uint32_t(q.y) >> 2) << 21) | std::uint64_t(std::uint32_t(q.z) >> 2);
+        const std::size_t local = std::size_t(q.x & 3) | std::size_t(q.y & 3) << 2 | std::size_t(q.z & 3) << 4;
+        if (key != last_key_) find_block(key, true);
+        return values_[64 * std::size_t(last_id_) + local];
+    }
+    //! The value at q, or `empty` (does not create blocks).
+    T get(glm::ivec3 q) const {
+        const std::uint64_t key = (std::uint64_t(std::uint32_t(q.x) >> 2) << 42) |
+                                  (std::uint64_t(std::uint32_t(q.y) >> 2) << 21) | std::uint64_t(std::uint32_t(q.z) >> 2);
+        const std::size_t local = std::size_t(q.x & 3) | std::size_t(q.y & 3) << 2 | std::size_t(q.z & 3) << 4;
+        if (key != last_key_ && !find_block(key, false)) return empty_;
+        return values_[64 * std::size_t(last_id_) + local];
+    }
+    void clear() {
+        keys_.clear();
+        ids_.clear();
+        values_.clear();
+        blocks_ = 0;
+        last_key_ = ~std::uint64_t(0);
+    }
+
+private:
+    static std::size_t hash(std::uint64_t k) {
+        k ^= k >> 33;
+        k *= 0xff51afd7ed558ccdULL;
+        k ^= k >> 33;
+        return std::size_t(k);
+    }
+    bool find_block(std::uint64_t key, bool create) const {
+        if (create && 2 * (blocks_ + 1) > keys_.size()) grow();
+        if (keys_.empty()) return false;
+        const std::size_t mask = keys_.size() - 1;
+        std::size_t i = hash(key) & mask;
+        while (keys_[i] != key && keys_[i] != ~std::uint64_t(0)) i = (i + 1) & mask;
+        if (keys_[i] != key) {
+            if (!create) return false;
+            keys_[i] = key;
+            ids_[i] = std::uint32_t(blocks_++);
+            values_.resize(64 * blocks_, empty_);
+        }
+        last_key_ = key;
+        last_id_ = ids_[i];
+        return true;
+    }
+    void grow() const {
+        std::vector<std::uint64_t> old_keys = std::move(keys_);
+        std::vector<std::uint32_t> old_ids = std::move(ids_);
+        const std::size_t cap = old_keys.empty() ? 256 : 2 * old_keys.size();
+        keys_.assign(cap, ~std::uint64_t(0));
+        ids_.assign(cap, 0);
+        for (std::size_t j = 0; j < old_keys.size(); ++j) {
+            if (old_keys[j] == ~std::uint64_t(0)) continue;
+            std::size_t i = hash(old_keys[j]) & (cap - 1);
+            while (keys_[i] != ~std::uint64_t(0)) i = (i + 1) & (cap - 1);
+            keys_[i] = old_keys[j];
+            ids_[i] = old_ids[j];
+        }
+    }
+    T empty_;
+    // mutable: get() memoises the last block
+    mutable std::vector<std::uint64_t> keys_;
+    mutable std::vector<std::uint32_t> ids_;
+    mutable std::vector<T> values_;
+    mutable std::size_t blocks_ = 0;
+    mutable std::uint64_t last_key_ = ~std::uint64_t(0);
+    mutable std::uint32_t last_id_ = 0;
+};
+
+//! An octree over a cube (Cartesian) or a spherical shell (r ∈ [r_min, r_max], θ ∈ [0, π], φ ∈ [0, 2π)), with
+//! the field sampled once per lattice point (a cache keyed by the canonical lattice point, so neighbours share
+//! values and the φ seam and the poles agree). Build it with build_octree / build_spherical_octree.
+//! Not thread-safe (value() fills the cache). Keeps a pointer to the field: the field must outlive the octree's use.
+class Octree {
+public:
+    Coordinates coordinates = Coordinates::cartesian;
+    int max_level = 0;                 //!< L; the finest lattice has N = 2^L cells per axis
+    glm::dvec3 min_corner{0.0};        //!< Cartesian: the domain cube is min_corner + [0, size]³
+    double size = 0.0;
+    glm::dvec3 origin{0.0};            //!< spherical: the origin of (r, θ, φ)
+    double r_min = 0.0, r_max = 0.0;   //!< spherical: the shell
+    const ScalarField* field = nullptr;
+    std::vector<OctreeNode> nodes;     //!< nodes[0] is the root (level 0); unreachable nodes may remain
+    std::vector<DualVertex> vertices;  //!< dual vertices referenced by leaves (OctreeNode::vertex)
+
+    //! Set the domain (and the sin/cos tables of the spherical lattice); clears nodes, vertices and cache and
+    //! creates the root. \throw std::invalid_argument for max_level ∉ [1, 10], size ≤ 0, r_min < 0, r_min ≥ r_max.
+    void init_cartesian(const ScalarField& f, int level, const glm::dvec3& min_corner, double size);
+    void init_spherical(const ScalarField& f, int level, const glm::dvec3& origin, double r_min, double r_max);
+
+    std::int32_t resolution() const { return std::int32_t(1) << max_level; }  //!< N
+    //! Width of a cell of level l in lattice units: 2^(L − l).
+    std::int32_t cell_span(int level) const { return std::int32_t(1) << (max_level - level); }
+    //! Lattice coordinates of corner c (bits cx, cy, cz as for children) of node n.
+    glm::ivec3 corner(const OctreeNode& n, int c) const;
+
+    //! The canonical form of a lattice point: φ index modulo N; on the polar axis (θ index 0 or N) φ = 0;
+    //! at r = 0 (r_min == 0, r index 0) θ = φ = 0. Identity for Cartesian octrees.
+    glm::ivec3 canonical(glm::ivec3 q) const {
+        if (coordinates == Coordinates::cartesian) return q;
+        const std::int32_t n = resolution();
+        q.z &= n - 1;  // modulo N (two's complement: also for negative z)
+        if (q.y == 0 || q.y == n) q.z = 0;
+        if (q.x == 0 && r_min == 0.0) q.y = q.z = 0;
+        return q;
+    }
+    //! The parameters of a lattice point: Cartesian (x, y, z) position, or spherical (r, θ, φ) with φ NOT wrapped
+    //! (z = N gives φ = 2π, so arcs of the last sector interpolate correctly).
+    Spherical lattice_spherical(glm::ivec3 q) const;
+    //! The Cartesian position of a lattice point (exact on the polar axis, see to_cartesian).
+    glm::dvec3 lattice_point(glm::ivec3 q) const;
+    //! f at a lattice point, evaluated once and cached under canonical(q) (the cache is mutable: not thread-safe).
+    double value(glm::ivec3 q) const {
+        double& v = cache_.slot(canonical(q));
+        if (v != v) v = sample(q);  // NaN: not sampled yet
+        return v;
+    }
+    //! The Cartesian position of a point given in spherical parameters relative to `origin` (spherical octrees).
+    glm::dvec3 spherical_point(const Spherical& s) const;
+
+    //! The leaf containing the point with DOUBLED lattice coordinates p2 (2q = lattice point q; odd values are
+    //! half-way between lattice points), or invalid_index outside the domain (φ wraps; r, θ and Cartesian
+    //! coordinates outside [0, 2N] are outside). Descends from the root: O(L).
+    std::uint32_t locate(glm::ivec3 p2) const;
+    //! Indices of all leaves reachable from the root, depth first.
+    std::vector<std::uint32_t> leaves() const;
+    //! Number of nodes reachable from the root.
+    std::size_t reachable_nodes() const;
+    //! Number of cached field samples.
+    std::size_t samples() const { return samples_; }
+
+    //! Append 8 children to node n (a leaf), in the order of the child index c. Returns the first child index.
+    std::uint32_t split(std::uint32_t n);
+
+private:
+    mutable BlockGrid<double> cache_{std::numeric_limits<double>::quiet_NaN()};
+    mutable std::size_t samples_ = 0;
+    double sample(glm::ivec3 q) const;  // f(lattice_point(q)), counted
+    std::vector<double> sin_t_, cos_t_, sin_p_, cos_p_;  // spherical lattice tables, N + 1 entries each
+};
+
+// =====================================================================================================================
+// Task 3 — the Cartesian octree (handout §4)
+// =====================================================================================================================
+
+struct CartesianParams {
+    int max_level = 6;                 //!< L ∈ [1, 10]: 2^L finest cells per axis
+    double padding = 0.05;             //!< the cube's side is (1 + 2·padding) · the largest extent of bounds()
+    double tau = 0.01;                 //!< QEF eigenvalue truncation (Qef::solve)
+    double crossing_tolerance = 1e-7;  //!< find_root tolerance (fraction of the edge)
+    //! Ju et al.'s simplification: collapse 8 leaf children into their parent when the topology test passes and
+    //! the merged QEF's RMS residual √(Q/count) ≤ simplify_tolerance · (finest cell size). 0 disables it.
+    //! The default only merges exactly planar / sharp-feature regions (a box collapses to its 8 corners), not
+    //! curved ones.
+    double simplify_tolerance = 1e-5;
+};
+
+//! The domain cube of the Cartesian octree: centred on bounds(), side (1 + 2 padding) · largest extent.
+//! \throw std::invalid_argument if bounds() is empty (hi < lo on an axis, largest extent 0, or not finite).
+std::pair<glm::dvec3, double> cartesian_domain(const ScalarField& f, double padding);
+
+//! Task: build the Cartesian octree to `params.max_level` over cartesian_domain(f, params.padding).
+//! Refine a cell of level l < L when it may contain the surface by the CONSERVATIVE test
+//!   |f(center)| ≤ Lf · (half diagonal of the cell),   Lf = f.lipschitz(),
+//! (the centre is a lattice point, sample it with Octree::value). When lipschitz() == 0, Lf is estimated once as
+//! 2 × the largest |∇f| at the 9³ lattice of the domain (a heuristic, not a guarantee — documented in the handout).
+//! Leaves at level L are not tested (their corners decide). \throw std::invalid_argument for a bad level/bounds.
+Octree build_octree(const ScalarField& f, const CartesianParams& params);
+
+// =====================================================================================================================
+// Task 4 — dual vertices, simplification, polygons (handout §5)
+// =====================================================================================================================
+
+struct VertexParams {
+    double tau = 0.01;
+    double crossing_tolerance = 1e-7;
+};
+
+//! Task: give every leaf with a sign change on one of its 12 edges a dual vertex. For each such edge find the
+//! crossing (Cartesian: find_crossing on the segment; spherical: find_crossing_arc along the radial segment or the
+//! θ/φ arc, always from the edge's lower to its upper lattice end so that neighbours compute identical points),
+//! add it to the leaf's Qef, solve with params.tau, and keep the vertex in the cell: if the solution lies
+//! outside the cell, clamp it to the cell (Cartesian: the box; spherical: clamp r, θ and φ — φ measured
+//! relative to the cell, across the seam — to the cell's intervals). Edges that degenerate to a point (φ-edges on
+//! the polar axis, θ/φ-edges at r = 0) have no crossing; a radial edge on the axis is counted once.
+//! Finest edges are shared by 4 leaves: compute each crossing once (a BlockGrid keyed by the edge midpoint).
+//! Replaces tree.vertices. \return the number of crossings computed.
+std::size_t place_vertices(Octree& tree, const VertexParams& params);
+
+//! Task (Cartesian octrees only): Ju et al.'s bottom-up simplification. A node whose 8 children are all leaves
+//! becomes a leaf when (1) its corner signs form a single sheet (inside corners edge-connected and outside
+//! corners edge-connected), (2) the sign at the midpoint of each of its edges agrees with one of that edge's
+//! ends, at each face centre with one of the face's corners, at its centre with one of its corners, (3) the
+//! merged QEF's unclamped solution lies in the cell and √(Q/count) ≤ tolerance (a length). The new leaf gets the
+//! merged QEF's vertex (children's vertices stay in tree.vertices, unreferenced). Repeats up the tree.
+//! \return the number of collapses.
+std::size_t simplify(Octree& tree, double tolerance, double tau);
+
+//! A hole around the polar axis left by contour() on a spherical octree: the dual vertices of the leaves around
+//! one sign-changing minimal radial edge ON the axis, ordered so that the fan (ghost, ring[i], ring[i+1]) is
+//! outward oriented (counter-clockwise seen from outside).
+struct PoleRing {
+    std::vector<std::uint32_t> ring;  //!< indices into the soup's positions
+    bool north = true;                //!< θ = 0 (+Z side of the origin) or θ = π
+    double r_lo = 0.0, r_hi = 0.0;    //!< the radial extent of the axis edge
+};
+
+//! Task: polygons of the dual contour. For every sign-changing MINIMAL edge (an edge of a leaf that no smaller
+//! leaf subdivides), take the leaves in the four quadrants around it (locate() at the edge midpoint ± half a
+//! finest cell), drop repeats (adaptive trees), and emit a triangle or a quad split into 2 triangles (along the
+//! shorter diagonal), counter-clockwise around the edge's axis when the edge's lower end is inside (reversed
+//! otherwise), so normals point outward. Emit each edge once. Spherical octrees: radial edges on the polar axis are
+//! surrounded by a whole ring of leaves, not four — they are returned in `poles` (when not null) instead;
+//! edges on the inner sphere r = r_min (no cells below) are skipped.
+//! \return a triangle soup whose positions are the referenced dual vertices (unreferenced ones are dropped).
+//! \throw TopologyError if a leaf around a sign-changing edge has no vertex.
+PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles = nullptr);
+
+// =====================================================================================================================
+// Task 5 — the origin of the spherical octree (handout §6)
+// =====================================================================================================================
+
+struct Sphere {
+    glm::dvec3 center{0.0};
+    double radius = 0.0;
+};
+
+//! Task: the smallest sphere containing all points (Welzl 1991; iterative move-to-front form, points shuffled
+//! with a fixed seed so the result is deterministic). Handles duplicates and degenerate (collinear, coplanar)
+//! support sets. Empty input → radius 0 at the origin.
+Sphere minimal_enclosing_sphere(std::span<const glm::dvec3> points);
+
+//! Eq. (6) of the paper with dimensionally sane units: steps x_{k+1} = x_k + s · delta · unit · ∇f/|∇f| with
+//! s = ±1 the side to move to, until |f(x)| ≥ margin · unit with sign s.
+struct OriginParams {
+    double unit = 0.0;    //!< the length unit h (dual_contour_spherical: largest extent of bounds() / 2^L)
+    double delta = 1.5;   //!< step in units of h; > 1 as in the paper so that one step leaves the surface's cell
+    double margin = 2.0;  //!< |f| needed, in units of h (for signed distances: two finest cells from the surface)
+    int max_steps = 64;
+};
+
+//! Task: move x0 off the surface (the paper's eq. 6) and return every position, x0 first, the corrected origin
+//! last ({x0} when |f(x0)| ≥ margin already). The side s: sign f(x0) (stay on the side we are on, it is nearer);
+//! if f(x0) == 0, the side whose probe x0 ± delta·unit·n has the larger |f| (ties: inside). If |∇f| < 1e-12 at a
+//! step, use the direction to the probe with the largest s·f among ±X, ±Y, ±Z (at distance delta·unit).
+//! Stops after max_steps. \throw std::invalid_argument if unit ≤ 0.
+std::vector<glm::dvec3> correct_origin(const ScalarField& f, const glm::dvec3& x0, const OriginParams& params);
+
+// =====================================================================================================================
+// Task 6 — the spherical octree (handout §7)
+// =====================================================================================================================
+
+//! How to close the holes around the polar axis (paper §III.4, Fig. 7).
+struct PoleFill {
+    enum Method {
+        normal_projection,    //!< the paper: each ring vertex is projected along its tangent plane (normal ∇f) to the
+                              //!< axis; the ghost vertex is where those projections meet (least squares)
+        vertical_projection,  //!< the earlier ghost node: ring vertices projected perpendicularly onto the axis, the
+                              //!< ghost at their mean height (a flat cap)
+        none                  //!< leave the holes (boundary loops around the axis)
+    };
+};
+
+struct SphericalParams {
+    int max_level = 6;                     //!< L ∈ [1, 10]: 2^L divisions of r, of θ ∈ [0,π] and of φ ∈ [0,2π)
+    std::optional<glm::dvec3> origin;      //!< starting origin; default: the centre of bounds()
+    bool correct_origin = true;            //!< apply correct_origin (eq. 6)
+    OriginParams origin_params{};          //!< unit 0 → largest extent of bounds() / 2^L
+    double r_min = 0.0;                    //!< inner radius, ≥ 0; the surface must not reach inside it
+    double r_max = 0.0;                    //!< outer radius; 0 → 1.05 × the distance to the farthest corner of bounds()
+    double tau = 0.01;
+    double crossing_tolerance = 1e-7;
+    PoleFill::Method pole_fill = PoleFill::normal_projection;
+};
+
+//! Task: build the spherical octree: the shell r ∈ [r_min, r_max] × θ ∈ [0, π] × φ ∈ [0, 2π) about `origin` is the
+//! root (level 0, always split); every split halves r, θ and φ. Refine a cell of level l < L when
+//!   |f(c)| ≤ Lf · R,   c = the point at the cell's parameter midpoint,
+//! R = max over r ∈ {r_lo, r_hi} of √(r² + r_c² − 2 r r_c cos γ), γ = the largest angle between the direction of c
+//! and the directions of the cell's 4 angular corners — a radius of a ball around c that contains the curved cell
+//! (for levels ≥ 1 the largest angle is at a corner). Lf as in build_octree.
+//! \throw std::invalid_argument for a bad level, r_min < 0 or r_min ≥ r_max.
+Octree build_spherical_octree(const ScalarField& f, int max_level, const glm::dvec3& origin, double r_min,
+                              double r_max);
+
+// =====================================================================================================================
+// Task 7 — polar holes (handout §8)
+// =====================================================================================================================
+
+//! What fill_poles added, for the demo to colour.
+struct PoleFillResult {
+    std::vector<std::uint32_t> ghost_vertices;  //!< one per ring, appended to soup.positions
+    std::vector<std::uint32_t> ring_vertices;   //!< the hole boundaries (all rings, concatenated)
+    std::size_t first_face = 0, n_faces = 0;    //!< the fan triangles are faces [first_face, first_face + n_faces)
+};
+
+//! Task: close each ring with a fan of triangles (ghost, ring[i], ring[i+1]) around a new ghost vertex on the
+//! polar axis a = ±Z through `origin` (north: +Z), at the axial coordinate (distance along a from origin):
+//!  - normal_projection: s* = Σ (nᵢ·a)(nᵢ·(vᵢ − o)) / Σ (nᵢ·a)², nᵢ = ∇f(vᵢ)/|∇f(vᵢ)| — the point of the axis
+//!    that best lies on the tangent planes of all ring vertices (each plane meets the axis where the vertex's
+//!    projection along its tangent reaches the axis; opposite vertices' projections meet there); falls back to
+//!    vertical_projection when Σ (nᵢ·a)² < 1e-12 · ring size;
+//!  - vertical_projection: s* = mean of a·(vᵢ − o) (each vertex projected perpendicularly onto the axis);
+//! then clamped to [r_lo, r_hi] of the ring's axis edge (the ghost stays in the ring's cells, like a DC vertex).
+//! Method none adds nothing. \pre the field gradient is defined near the ring (normal_projection).
+PoleFillResult fill_poles(PolygonSoup& soup, std::span<const PoleRing> rings, const ScalarField& f,
+                          const glm::dvec3& origin, PoleFill::Method method);
+
+// =====================================================================================================================
+// One-shot functions
+// =====================================================================================================================
+
+struct DcStats {
+    std::size_t cells = 0;      //!< reachable octree nodes
+    std::size_t leaves = 0;
+    std::size_t samples = 0;    //!< field evaluations at lattice points
+    std::size_t crossings = 0;  //!< edge crossings computed (once per finest edge, shared by its leaves)
+    std::size_t collapses = 0;  //!< simplification collapses (Cartesian)
+    std::size_t vertices = 0, faces = 0;
+    std::size_t pole_rings = 0, ghost_vertices = 0;
+    glm::dvec3 origin{0.0};                 //!< spherical: the origin used
+    std::vector<glm::dvec3> origin_path;    //!< spherical: correct_origin's steps (origin_path.back() == origin)
+    double r_min = 0.0, r_max = 0.0;        //!< spherical: the shell used
+    PoleFillResult pole_fill;               //!< spherical: what fill_poles added
+    double seconds = 0.0;                   //!< wall time of the whole call
+};
+
+//! build_octree → place_vertices → simplify → contour. \throw std::invalid_argument on bad parameters.
+PolygonSoup dual_contour_cartesian(const ScalarField& f, const CartesianParams& params, DcStats* stats = nullptr);
+//! origin (params.origin or the centre of bounds()) → correct_origin → build_spherical_octree → place_vertices →
+//! contour → fill_poles. \throw std::invalid_argument on bad parameters.
+PolygonSoup dual_contour_spherical(const ScalarField& f, const SphericalParams& params, DcStats* stats = nullptr);
+
+// =====================================================================================================================
+// Mesh checks (given; used by the tests and the CLI)
+// =====================================================================================================================
+
+struct MeshCheck {
+    std::size_t boundary_edges = 0;      //!< undirected edges in exactly one face
+    std::size_t non_manifold_edges = 0;  //!< undirected edges in more than two faces
+    std::size_t misoriented_edges = 0;   //!< edges in two faces that traverse it in the same direction
+    std::size_t degenerate_faces = 0;    //!< faces with a repeated vertex index
+    bool closed_manifold() const {
+        return boundary_edges == 0 && non_manifold_edges == 0 && misoriented_edges == 0 && degenerate_faces == 0;
+    }
+};
+MeshCheck check_mesh(const PolygonSoup& soup);
+std::size_t boundary_edge_count(const PolygonSoup& soup);
+std::size_t non_manifold_edge_count(const PolygonSoup& soup);
+//! Closed, 2-manifold and consistently oriented.
+bool is_closed_manifold(const PolygonSoup& soup);
+//! Signed enclosed volume by the divergence theorem: Σ over fan triangles of p0 · (p1 × p2) / 6 (positive for
+//! outward orientation).
+double signed_volume(const PolygonSoup& soup);
+//! max over vertices of |f(v)|.
+double max_abs_value(const ScalarField& f, const PolygonSoup& soup);
+
+}  // namespace geolab::dc

@@ -1,0 +1,189 @@
+// Lab 09 — the octree data structure (given) and the Cartesian octree build (task 3).
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include <glm/geometric.hpp>
+
+#include "geolab/dual_contouring.hpp"
+#include "geolab/errors.hpp"
+
+namespace geolab::dc {
+
+// ---- Octree (given) -------------------------------------------------------------------------------------------------
+
+namespace {
+void check_level(int level, const char* who) {
+    if (level < 1 || level > 10)
+        throw std::invalid_argument(std::string(who) + ": max_level must be in [1, 10], got " + std::to_string(level));
+}
+}  // namespace
+
+void Octree::init_cartesian(const ScalarField& f, int level, const glm::dvec3& lo, double side) {
+    check_level(level, "Octree::init_cartesian");
+    if (!(side > 0.0) || !std::isfinite(side))
+        throw std::invalid_argument("Octree::init_cartesian: the domain size must be positive and finite");
+    coordinates = Coordinates::cartesian;
+    max_level = level;
+    min_corner = lo;
+    size = side;
+    field = &f;
+    nodes.assign(1, OctreeNode{});
+    vertices.clear();
+    cache_.clear();
+    samples_ = 0;
+}
+
+void Octree::init_spherical(const ScalarField& f, int level, const glm::dvec3& o, double rmin, double rmax) {
+    check_level(level, "Octree::init_spherical");
+    if (!(rmin >= 0.0)) throw std::invalid_argument("Octree::init_spherical: r_min must be >= 0");
+    if (!(rmin < rmax) || !std::isfinite(rmax))
+        throw std::invalid_argument("Octree::init_spherical: need r_min < r_max (got r_min = " + std::to_string(rmin) +
+                                    ", r_max = " + std::to_string(rmax) + ")");
+    coordinates = Coordinates::spherical;
+    max_level = level;
+    origin = o;
+    r_min = rmin;
+    r_max = rmax;
+    field = &f;
+    nodes.assign(1, OctreeNode{});
+    vertices.clear();
+    cache_.clear();
+    samples_ = 0;
+    const int n = resolution();
+    sin_t_.resize(n + 1);
+    cos_t_.resize(n + 1);
+    sin_p_.resize(n + 1);
+    cos_p_.resize(n + 1);
+    for (int i = 0; i <= n; ++i) {
+        double t = pi * i / n, p = 2.0 * pi * i / n;
+        sin_t_[i] = std::sin(t);
+        cos_t_[i] = std::cos(t);
+        sin_p_[i] = std::sin(p);
+        cos_p_[i] = std::cos(p);
+    }
+    // exact values on the axes and the seam: every pole point is exactly on the axis, φ = 2π is φ = 0
+    sin_t_[0] = sin_t_[n] = 0.0;
+    cos_t_[0] = 1.0;
+    cos_t_[n] = -1.0;
+    sin_p_[0] = sin_p_[n] = 0.0;
+    cos_p_[0] = cos_p_[n] = 1.0;
+}
+
+glm::ivec3 Octree::corner(const OctreeNode& n, int c) const {
+    const std::int32_t s = cell_span(n.level);
+    return {(std::int32_t(n.x) + (c & 1)) * s, (std::int32_t(n.y) + ((c >> 1) & 1)) * s,
+            (std::int32_t(n.z) + ((c >> 2) & 1)) * s};
+}
+
+Spherical Octree::lattice_spherical(glm::ivec3 q) const {
+    const double n = resolution();
+    if (coordinates == Coordinates::cartesian) {
+        glm::dvec3 p = lattice_point(q);
+        return {p.x, p.y, p.z};
+    }
+    return {r_min + (r_max - r_min) * (q.x / n), pi * (q.y / n), 2.0 * pi * (q.z / n)};
+}
+
+glm::dvec3 Octree::lattice_point(glm::ivec3 q) const {
+    const double n = resolution();
+    if (coordinates == Coordinates::cartesian) return min_corner + (size / n) * glm::dvec3(q);
+    const std::int32_t ni = resolution();
+    double r = r_min + (r_max - r_min) * (q.x / n);
+    std::int32_t t = std::clamp(q.y, 0, ni);
+    std::int32_t p = ((q.z % ni) + ni) % ni;
+    double st = sin_t_[t];
+    return origin + glm::dvec3(r * st * cos_p_[p], r * st * sin_p_[p], r * cos_t_[t]);
+}
+
+double Octree::sample(glm::ivec3 q) const {
+    ++samples_;
+    return field->value(lattice_point(q));
+}
+
+glm::dvec3 Octree::spherical_point(const Spherical& s) const { return origin + to_cartesian(s); }
+
+std::uint32_t Octree::locate(glm::ivec3 p2) const {
+    const std::int32_t n2 = 2 * resolution();
+    if (coordinates == Coordinates::spherical) p2.z = ((p2.z % n2) + n2) % n2;
+    for (int a = 0; a < 3; ++a)
+        if (p2[a] < 0 || p2[a] > n2) return invalid_index;
+    std::uint32_t cur = 0;
+    while (!nodes[cur].is_leaf()) {
+        const OctreeNode& nd = nodes[cur];
+        // the children split at the cell's midpoint, in doubled coordinates 2 (2 c + 1) span/2 = (2c + 1) span
+        const std::int32_t s = cell_span(nd.level);
+        int c = 0;
+        if (p2.x >= (2 * std::int32_t(nd.x) + 1) * s) c |= 1;
+        if (p2.y >= (2 * std::int32_t(nd.y) + 1) * s) c |= 2;
+        if (p2.z >= (2 * std::int32_t(nd.z) + 1) * s) c |= 4;
+        cur = nd.first_child + c;
+    }
+    return cur;
+}
+
+std::vector<std::uint32_t> Octree::leaves() const {
+    std::vector<std::uint32_t> out, stack{0};
+    if (nodes.empty()) return out;
+    while (!stack.empty()) {
+        std::uint32_t n = stack.back();
+        stack.pop_back();
+        if (nodes[n].is_leaf()) {
+            out.push_back(n);
+        } else {
+            for (int c = 7; c >= 0; --c) stack.push_back(nodes[n].first_child + c);
+        }
+    }
+    return out;
+}
+
+std::size_t Octree::reachable_nodes() const {
+    if (nodes.empty()) return 0;
+    std::size_t count = 0;
+    std::vector<std::uint32_t> stack{0};
+    while (!stack.empty()) {
+        std::uint32_t n = stack.back();
+        stack.pop_back();
+        ++count;
+        if (!nodes[n].is_leaf())
+            for (int c = 0; c < 8; ++c) stack.push_back(nodes[n].first_child + c);
+    }
+    return count;
+}
+
+std::uint32_t Octree::split(std::uint32_t n) {
+    const std::uint32_t first = std::uint32_t(nodes.size());
+    const OctreeNode parent = nodes[n];
+    for (int c = 0; c < 8; ++c) {
+        OctreeNode ch;
+        ch.x = 2 * parent.x + (c & 1);
+        ch.y = 2 * parent.y + ((c >> 1) & 1);
+        ch.z = 2 * parent.z + ((c >> 2) & 1);
+        ch.level = std::uint8_t(parent.level + 1);
+        nodes.push_back(ch);
+    }
+    nodes[n].first_child = first;
+    return first;
+}
+
+std::pair<glm::dvec3, double> cartesian_domain(const ScalarField& f, double padding) {
+    Box b = f.bounds();
+    glm::dvec3 ext = b.hi - b.lo;
+    double m = std::max({ext.x, ext.y, ext.z});
+    if (!(ext.x >= 0.0 && ext.y >= 0.0 && ext.z >= 0.0) || !(m > 0.0) || !std::isfinite(m) ||
+        !std::isfinite(b.lo.x + b.lo.y + b.lo.z))
+        throw std::invalid_argument("cartesian_domain: the field's bounds() are empty or not finite");
+    if (!(padding >= 0.0)) throw std::invalid_argument("cartesian_domain: padding must be >= 0");
+    double side = m * (1.0 + 2.0 * padding);
+    return {b.center() - glm::dvec3(0.5 * side), side};
+}
+
+// ---- Task 3: the Cartesian octree -----------------------------------------------------------------------------------
+
+Octree build_octree(const ScalarField& f, const CartesianParams& params) {
+    throw geolab::NotImplemented(__func__);
+}
+
+}  // namespace geolab::dc

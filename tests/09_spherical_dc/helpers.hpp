@@ -1,0 +1,522 @@
+#pragma once
+// Lab 09 test helpers: the shapes (analytic fields with known volumes, fields with exact zeros on the lattice,
+// fields whose QEF minimisers leave their cells), and checks computed independently of the lab's code (an edge
+// map, boundary loops, the enclosed volume, spherical coordinates, a brute-force smallest enclosing sphere).
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <numeric>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
+
+#include "geolab/dual_contouring.hpp"
+#include "geolab/errors.hpp"
+#include "geolab/field.hpp"
+#include "geolab/grading/test.hpp"
+#include "geolab/implicits.hpp"
+#include "geolab/io.hpp"
+#include "geolab/mesh_field.hpp"
+#include "geolab/models.hpp"
+#include "geolab/soup.hpp"
+
+namespace lab09 {
+
+using namespace geolab::dc;
+using geolab::Box;
+using geolab::FieldPtr;
+using geolab::PolygonSoup;
+using geolab::ScalarField;
+
+inline constexpr double kPi = 3.14159265358979323846;
+
+inline std::string str(const glm::dvec3& p) {
+    std::ostringstream os;
+    os.precision(10);
+    os << "(" << p.x << ", " << p.y << ", " << p.z << ")";
+    return os.str();
+}
+
+// ---- independent mesh checks ---------------------------------------------------------------------------------
+
+// Undirected edges of a soup with how often each is traversed in each direction (lo→hi, hi→lo).
+struct EdgeReport {
+    std::size_t faces = 0, referenced_vertices = 0, edges = 0;
+    std::size_t boundary = 0, non_manifold = 0, misoriented = 0, degenerate = 0, non_triangles = 0;
+    std::size_t bad_indices = 0;
+    bool closed_manifold() const {
+        return faces > 0 && boundary == 0 && non_manifold == 0 && misoriented == 0 && degenerate == 0 &&
+               bad_indices == 0;
+    }
+    long euler() const { return long(referenced_vertices) - long(edges) + long(faces); }
+};
+
+inline EdgeReport edge_report(const PolygonSoup& soup) {
+    EdgeReport r;
+    r.faces = soup.n_faces();
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::pair<int, int>> uses;
+    std::vector<char> used(soup.n_vertices(), 0);
+    for (std::size_t f = 0; f < soup.n_faces(); ++f) {
+        auto vs = soup.face(f);
+        if (vs.size() != 3) ++r.non_triangles;
+        bool bad = false, degenerate = false;
+        for (std::size_t i = 0; i < vs.size(); ++i) {
+            if (vs[i] >= soup.n_vertices()) bad = true;
+            for (std::size_t j = 0; j < i; ++j) degenerate |= vs[i] == vs[j];
+        }
+        if (bad) {
+            ++r.bad_indices;
+            continue;
+        }
+        r.degenerate += degenerate;
+        for (std::size_t i = 0; i < vs.size(); ++i) {
+            std::uint32_t a = vs[i], b = vs[(i + 1) % vs.size()];
+            used[a] = 1;
+            if (a == b) continue;
+            auto& u = uses[{std::min(a, b), std::max(a, b)}];
+            (a < b ? u.first : u.second) += 1;
+        }
+    }
+    r.referenced_vertices = std::size_t(std::count(used.begin(), used.end(), 1));
+    r.edges = uses.size();
+    for (const auto& [e, u] : uses) {
+        int n = u.first + u.second;
+        if (n == 1) ++r.boundary;
+        else if (n > 2) ++r.non_manifold;
+        else if (u.first != 1) ++r.misoriented;
+    }
+    return r;
+}
+
+inline std::string describe(const EdgeReport& r) {
+    std::ostringstream os;
+    os << "faces " << r.faces << ", vertices used " << r.referenced_vertices << ", edges " << r.edges
+       << ", boundary edges " << r.boundary << ", non-manifold edges " << r.non_manifold
+       << ", misoriented edges " << r.misoriented << ", degenerate faces " << r.degenerate
+       << ", non-triangles " << r.non_triangles << ", bad indices " << r.bad_indices << ", chi " << r.euler();
+    return os.str();
+}
+
+// Number of boundary loops: connected components of the graph of boundary edges (edges used by one face).
+inline std::size_t boundary_loops(const PolygonSoup& soup) {
+    std::map<std::pair<std::uint32_t, std::uint32_t>, int> count;
+    for (std::size_t f = 0; f < soup.n_faces(); ++f) {
+        auto vs = soup.face(f);
+        for (std::size_t i = 0; i < vs.size(); ++i) {
+            std::uint32_t a = vs[i], b = vs[(i + 1) % vs.size()];
+            if (a != b) ++count[{std::min(a, b), std::max(a, b)}];
+        }
+    }
+    std::map<std::uint32_t, std::uint32_t> parent;
+    auto find = [&](std::uint32_t x) {
+        while (parent[x] != x) x = parent[x] = parent[parent[x]];
+        return x;
+    };
+    for (const auto& [e, n] : count) {
+        if (n != 1) continue;
+        for (std::uint32_t v : {e.first, e.second})
+            if (!parent.count(v)) parent[v] = v;
+        parent[find(e.first)] = find(e.second);
+    }
+    std::size_t loops = 0;
+    for (const auto& [v, p] : parent) loops += find(v) == v;
+    return loops;
+}
+
+// Connected components of the faces (sharing a vertex).
+inline std::size_t components(const PolygonSoup& soup) {
+    std::vector<std::uint32_t> parent(soup.n_vertices());
+    std::iota(parent.begin(), parent.end(), 0u);
+    auto find = [&](std::uint32_t x) {
+        while (parent[x] != x) x = parent[x] = parent[parent[x]];
+        return x;
+    };
+    std::vector<char> used(soup.n_vertices(), 0);
+    for (std::size_t f = 0; f < soup.n_faces(); ++f) {
+        auto vs = soup.face(f);
+        for (std::size_t i = 0; i < vs.size(); ++i) {
+            if (vs[i] >= soup.n_vertices()) continue;
+            used[vs[i]] = 1;
+            if (i > 0 && vs[0] < soup.n_vertices()) parent[find(vs[i])] = find(vs[0]);
+        }
+    }
+    std::size_t n = 0;
+    for (std::uint32_t v = 0; v < soup.n_vertices(); ++v) n += used[v] && find(v) == v;
+    return n;
+}
+
+// Enclosed volume by the divergence theorem, fan triangles taken about the vertex centroid (less rounding than
+// about the coordinate origin). Positive for outward orientation.
+inline double enclosed_volume(const PolygonSoup& soup) {
+    if (soup.n_vertices() == 0) return 0.0;
+    glm::dvec3 c(0.0);
+    for (const auto& p : soup.positions) c += p;
+    c /= double(soup.n_vertices());
+    double v = 0.0;
+    for (std::size_t f = 0; f < soup.n_faces(); ++f) {
+        auto vs = soup.face(f);
+        for (std::size_t i = 1; i + 1 < vs.size(); ++i)
+            v += glm::dot(soup.positions[vs[0]] - c,
+                          glm::cross(soup.positions[vs[i]] - c, soup.positions[vs[i + 1]] - c));
+    }
+    return v / 6.0;
+}
+
+inline double max_abs_f(const ScalarField& f, const PolygonSoup& soup) {
+    double m = 0.0;
+    for (const auto& p : soup.positions) m = std::max(m, std::abs(f.value(p)));
+    return m;
+}
+
+// Both the lab's given mesh check and the independent edge map must call the soup a closed oriented manifold.
+#define LAB09_CHECK_CLOSED_MANIFOLD(soup, label)                                                              \
+    do {                                                                                                      \
+        const ::lab09::EdgeReport er_ = ::lab09::edge_report(soup);                                           \
+        const ::geolab::dc::MeshCheck mc_ = ::geolab::dc::check_mesh(soup);                                   \
+        const std::string label_ = std::string(label);                                                        \
+        INFO(label_ << ": " << ::lab09::describe(er_));                                                       \
+        CHECK_MESSAGE(er_.faces > 0, "the mesh has no faces");                                               \
+        CHECK_MESSAGE(er_.boundary == 0, "boundary edges (holes, cracks): " << er_.boundary);                 \
+        CHECK_MESSAGE(er_.non_manifold == 0, "edges in more than 2 faces: " << er_.non_manifold);             \
+        CHECK_MESSAGE(er_.misoriented == 0, "edges traversed twice the same way: " << er_.misoriented);       \
+        CHECK_MESSAGE(er_.degenerate == 0, "faces with a repeated vertex: " << er_.degenerate);               \
+        CHECK_MESSAGE(er_.bad_indices == 0, "faces with an index >= n_vertices: " << er_.bad_indices);        \
+        CHECK_MESSAGE(er_.non_triangles == 0, "faces that are not triangles: " << er_.non_triangles);         \
+        CHECK_MESSAGE(mc_.closed_manifold(), "check_mesh disagrees: boundary " << mc_.boundary_edges          \
+                                                 << ", non-manifold " << mc_.non_manifold_edges);             \
+    } while (0)
+
+// ---- spherical coordinates, computed here without the lab's functions ------------------------------------------
+
+struct Sph {
+    double r, theta, phi;  // phi in [0, 2π)
+};
+inline Sph sph_of(const glm::dvec3& p) {
+    double rho = std::hypot(p.x, p.y);
+    double r = std::hypot(rho, p.z);
+    double th = std::atan2(rho, p.z);
+    double ph = std::atan2(p.y, p.x);
+    if (ph < 0) ph += 2 * kPi;
+    if (ph >= 2 * kPi) ph -= 2 * kPi;
+    return {r, th, ph};
+}
+inline glm::dvec3 cart_of(double r, double th, double ph) {
+    return {r * std::sin(th) * std::cos(ph), r * std::sin(th) * std::sin(ph), r * std::cos(th)};
+}
+// Angular distance from phi to the interval [lo, lo + w] going around the circle (0 inside).
+inline double phi_outside(double phi, double lo, double w) {
+    double d = std::fmod(phi - lo + 4 * kPi, 2 * kPi);
+    if (d <= w) return 0.0;
+    return std::min(d - w, 2 * kPi - d);
+}
+
+// ---- octree helpers (the given data structure only) -----------------------------------------------------------
+
+// The leaf containing a Cartesian point (Cartesian octree), by doubled lattice coordinates.
+inline std::uint32_t leaf_at(const Octree& t, const glm::dvec3& p) {
+    if (t.coordinates == Coordinates::cartesian) {
+        glm::dvec3 q = (p - t.min_corner) * (2.0 * t.resolution() / t.size);
+        return t.locate(glm::ivec3(glm::floor(q)));
+    }
+    Sph s = sph_of(p - t.origin);
+    const double n2 = 2.0 * t.resolution();
+    glm::dvec3 q((s.r - t.r_min) / (t.r_max - t.r_min) * n2, s.theta / kPi * n2, s.phi / (2 * kPi) * n2);
+    glm::ivec3 qi(glm::floor(q));
+    qi.y = std::clamp(qi.y, 0, int(n2) - 1);
+    qi.z = std::clamp(qi.z, 0, int(n2) - 1);
+    return t.locate(qi);
+}
+
+// Leaves (indices) reachable from the root; checks on the way that children follow the convention.
+struct TreeShape {
+    std::vector<std::uint32_t> leaves;
+    std::size_t bad_children = 0;  // child cell index != 2 * parent + bits, or level != parent + 1
+    std::size_t deeper_than_max = 0;
+};
+inline TreeShape tree_shape(const Octree& t) {
+    TreeShape s;
+    if (t.nodes.empty()) return s;
+    std::vector<std::uint32_t> stack{0};
+    while (!stack.empty()) {
+        std::uint32_t n = stack.back();
+        stack.pop_back();
+        const OctreeNode& nd = t.nodes[n];
+        if (nd.level > t.max_level) ++s.deeper_than_max;
+        if (nd.is_leaf()) {
+            s.leaves.push_back(n);
+            continue;
+        }
+        if (nd.first_child + 8 > t.nodes.size()) {
+            ++s.bad_children;
+            continue;
+        }
+        for (int c = 0; c < 8; ++c) {
+            const OctreeNode& ch = t.nodes[nd.first_child + c];
+            if (ch.level != nd.level + 1 || ch.x != 2 * nd.x + (c & 1) || ch.y != 2 * nd.y + ((c >> 1) & 1) ||
+                ch.z != 2 * nd.z + ((c >> 2) & 1))
+                ++s.bad_children;
+            else
+                stack.push_back(nd.first_child + c);
+        }
+    }
+    return s;
+}
+
+// Corner c of a leaf is inside (by the lab's tie rule, f ≤ 0) — read through the given cache.
+inline int inside_corners(const Octree& t, const OctreeNode& nd) {
+    int n = 0;
+    for (int c = 0; c < 8; ++c) n += t.value(t.corner(nd, c)) <= 0.0;
+    return n;
+}
+
+// ---- shapes -----------------------------------------------------------------------------------------------------
+
+inline double sphere_volume(double r) { return 4.0 / 3.0 * kPi * r * r * r; }
+inline double torus_volume(double R, double r) { return 2.0 * kPi * kPi * R * r * r; }
+
+// −f: the same surface with inside and outside swapped (a closed surface then bounds the outside).
+class Negated final : public ScalarField {
+public:
+    explicit Negated(FieldPtr f) : f_(std::move(f)) {}
+    double value(const glm::dvec3& p) const override { return -f_->value(p); }
+    glm::dvec3 gradient(const glm::dvec3& p) const override { return -f_->gradient(p); }
+    Box bounds() const override { return f_->bounds(); }
+    double lipschitz() const override { return f_->lipschitz(); }
+
+private:
+    FieldPtr f_;
+};
+
+// f with an unknown Lipschitz constant (lipschitz() == 0: the octrees estimate one from the gradient).
+class NoLipschitz final : public ScalarField {
+public:
+    explicit NoLipschitz(FieldPtr f) : f_(std::move(f)) {}
+    double value(const glm::dvec3& p) const override { return f_->value(p); }
+    glm::dvec3 gradient(const glm::dvec3& p) const override { return f_->gradient(p); }
+    Box bounds() const override { return f_->bounds(); }
+
+private:
+    FieldPtr f_;
+};
+
+// An axis-aligned box whose faces lie EXACTLY on lattice planes of the Cartesian octree of level L built over
+// bounds() = [-1, 1]^3 with padding p: the planes lo + (side / N) * k, computed with the same formula as
+// Octree::lattice_point. f = max over axes of max(a_lo − x, x − a_hi) is 0 at the lattice points on the faces.
+class LatticeBox final : public ScalarField {
+public:
+    LatticeBox(int level, double padding, glm::ivec3 k_lo, glm::ivec3 k_hi) {
+        const double side = 2.0 * (1.0 + 2.0 * padding);
+        const glm::dvec3 lo = glm::dvec3(0.0) - glm::dvec3(0.5 * side);
+        const double n = double(1 << level);
+        lo_ = lo + (side / n) * glm::dvec3(k_lo);
+        hi_ = lo + (side / n) * glm::dvec3(k_hi);
+    }
+    double value(const glm::dvec3& p) const override {
+        double v = -1e300;
+        for (int a = 0; a < 3; ++a) v = std::max({v, lo_[a] - p[a], p[a] - hi_[a]});
+        return v;
+    }
+    glm::dvec3 gradient(const glm::dvec3& p) const override {
+        double best = -1e300;
+        glm::dvec3 g(0.0);
+        for (int a = 0; a < 3; ++a)
+            for (int s : {-1, 1}) {
+                double v = s < 0 ? lo_[a] - p[a] : p[a] - hi_[a];
+                if (v > best) best = v, g = glm::dvec3(0.0), g[a] = s;
+            }
+        return g;
+    }
+    Box bounds() const override { return {glm::dvec3(-1.0), glm::dvec3(1.0)}; }
+    double lipschitz() const override { return 1.0; }
+    glm::dvec3 lo_, hi_;
+};
+
+// The plane z = z0 (value exact), but with gradients that swing around wildly (∇f is NOT the plane's normal):
+// the QEF planes then meet far away, so unclamped minimisers leave their cells.
+class WobblyPlane final : public ScalarField {
+public:
+    explicit WobblyPlane(double z0) : z0_(z0) {}
+    double value(const glm::dvec3& p) const override { return p.z - z0_; }
+    glm::dvec3 gradient(const glm::dvec3& p) const override {
+        return {std::sin(23.0 * p.x + 7.0 * p.y), std::cos(19.0 * p.y - 5.0 * p.x), 0.35};
+    }
+    Box bounds() const override { return {glm::dvec3(-1.0), glm::dvec3(1.0)}; }
+    double lipschitz() const override { return 1.0; }
+
+private:
+    double z0_;
+};
+
+// A sphere with the wobbly gradients of WobblyPlane tilted towards the true normal (spherical clamping tests).
+class WobblySphere final : public ScalarField {
+public:
+    WobblySphere(glm::dvec3 c, double r) : c_(c), r_(r) {}
+    double value(const glm::dvec3& p) const override { return glm::length(p - c_) - r_; }
+    glm::dvec3 gradient(const glm::dvec3& p) const override {
+        glm::dvec3 n = glm::normalize(p - c_);
+        return n + 1.5 * glm::dvec3(std::sin(31.0 * p.x + 11.0 * p.y), std::cos(29.0 * p.y - 13.0 * p.z),
+                                    std::sin(37.0 * p.z + 3.0 * p.x));
+    }
+    Box bounds() const override { return {c_ - r_, c_ + r_}; }
+    double lipschitz() const override { return 1.0; }
+
+private:
+    glm::dvec3 c_;
+    double r_;
+};
+
+// ---- models -----------------------------------------------------------------------------------------------------
+
+// The model's soup; FAILS the test (REQUIRE) if it has not been fetched.
+inline PolygonSoup load_model(const std::string& name) {
+    auto path = geolab::model_path(name);
+    INFO("model " << name << " not found: run tools/fetch_models.sh (the README's bootstrap fetches the models)");
+    REQUIRE_MESSAGE(path.has_value(), "model " << name << " not found: run tools/fetch_models.sh");
+    return geolab::read_mesh(*path);
+}
+
+// ---- smallest enclosing sphere, brute force -------------------------------------------------------------------
+
+// Circumscribed / smallest sphere through a support set of 1-4 points (nullopt when degenerate).
+inline std::optional<Sphere> support_sphere(const std::vector<glm::dvec3>& s) {
+    if (s.size() == 1) return Sphere{s[0], 0.0};
+    if (s.size() == 2) return Sphere{0.5 * (s[0] + s[1]), 0.5 * glm::length(s[1] - s[0])};
+    if (s.size() == 3) {
+        glm::dvec3 a = s[1] - s[0], b = s[2] - s[0], n = glm::cross(a, b);
+        double n2 = glm::dot(n, n);
+        if (n2 < 1e-20 * glm::dot(a, a) * glm::dot(b, b)) return std::nullopt;
+        glm::dvec3 o = (glm::dot(b, b) * glm::cross(n, a) + glm::dot(a, a) * glm::cross(b, n)) / (2.0 * n2);
+        return Sphere{s[0] + o, glm::length(o)};
+    }
+    // 4 points: solve 2 (p_i − p_0) · x = |p_i|² − |p_0|² by Cramer's rule
+    glm::dvec3 r1 = 2.0 * (s[1] - s[0]), r2 = 2.0 * (s[2] - s[0]), r3 = 2.0 * (s[3] - s[0]);
+    double b1 = glm::dot(s[1], s[1]) - glm::dot(s[0], s[0]), b2 = glm::dot(s[2], s[2]) - glm::dot(s[0], s[0]),
+           b3 = glm::dot(s[3], s[3]) - glm::dot(s[0], s[0]);
+    double det = glm::dot(r1, glm::cross(r2, r3));
+    double scale = glm::length(r1) * glm::length(r2) * glm::length(r3);
+    if (std::abs(det) < 1e-10 * scale) return std::nullopt;
+    glm::dvec3 x = (b1 * glm::cross(r2, r3) + b2 * glm::cross(r3, r1) + b3 * glm::cross(r1, r2)) / det;
+    return Sphere{x, glm::length(x - s[0])};
+}
+
+// The smallest sphere containing all points: the smallest support sphere (≤ 4 points) that contains them all.
+inline Sphere brute_force_enclosing_sphere(const std::vector<glm::dvec3>& p, double eps) {
+    Sphere best{glm::dvec3(0.0), 1e300};
+    const std::size_t n = p.size();
+    auto consider = [&](const std::vector<glm::dvec3>& s) {
+        auto sp = support_sphere(s);
+        if (!sp || sp->radius >= best.radius) return;
+        for (const auto& q : p)
+            if (glm::length(q - sp->center) > sp->radius + eps) return;
+        best = *sp;
+    };
+    for (std::size_t i = 0; i < n; ++i) {
+        consider({p[i]});
+        for (std::size_t j = i + 1; j < n; ++j) {
+            consider({p[i], p[j]});
+            for (std::size_t k = j + 1; k < n; ++k) {
+                consider({p[i], p[j], p[k]});
+                for (std::size_t l = k + 1; l < n; ++l) consider({p[i], p[j], p[k], p[l]});
+            }
+        }
+    }
+    return best;
+}
+
+// A tiny deterministic generator (tests must not depend on the standard library's distributions).
+struct Lcg {
+    std::uint64_t s;
+    explicit Lcg(std::uint64_t seed) : s(seed * 6364136223846793005ULL + 1442695040888963407ULL) {}
+    double uniform() {  // [0, 1)
+        s = s * 6364136223846793005ULL + 1442695040888963407ULL;
+        return double(s >> 11) * (1.0 / 9007199254740992.0);
+    }
+    double uniform(double a, double b) { return a + (b - a) * uniform(); }
+    glm::dvec3 unit_vector() {
+        double z = uniform(-1.0, 1.0), t = uniform(0.0, 2 * kPi), r = std::sqrt(1 - z * z);
+        return {r * std::cos(t), r * std::sin(t), z};
+    }
+};
+
+// Points on the surface of a distance field near a dense grid (spacing `step`) over `box`: each grid point with
+// |f| < step is projected onto the surface along ∇f (exact for the distance fields used here).
+inline std::vector<glm::dvec3> surface_samples(const ScalarField& f, const Box& box, double step) {
+    std::vector<glm::dvec3> out;
+    glm::ivec3 n(glm::ceil((box.hi - box.lo) / step));
+    for (int i = 0; i <= n.x; ++i)
+        for (int j = 0; j <= n.y; ++j)
+            for (int k = 0; k <= n.z; ++k) {
+                glm::dvec3 p = box.lo + step * glm::dvec3(i, j, k);
+                double v = f.value(p);
+                if (std::abs(v) >= step) continue;
+                glm::dvec3 g = f.gradient(p);
+                double len = glm::length(g);
+                if (!(len > 0)) continue;
+                glm::dvec3 q = p - v * g / len;
+                if (std::abs(f.value(q)) < 1e-9) out.push_back(q);
+            }
+    return out;
+}
+
+}  // namespace lab09
+
+namespace lab09 {
+
+// Sign-changing edges of the leaves at max_level, each counted once (key: lower lattice end and axis).
+inline std::size_t sign_changing_finest_edges(const Octree& t) {
+    std::vector<std::uint64_t> keys;
+    for (std::uint32_t li : tree_shape(t).leaves) {
+        const OctreeNode& nd = t.nodes[li];
+        if (nd.level != t.max_level) continue;
+        for (int a = 0; a < 3; ++a)
+            for (int c = 0; c < 8; ++c) {
+                if (c & (1 << a)) continue;
+                const glm::ivec3 q0 = t.corner(nd, c), q1 = t.corner(nd, c | (1 << a));
+                if ((t.value(q0) <= 0.0) == (t.value(q1) <= 0.0)) continue;
+                keys.push_back((std::uint64_t(q0.x) << 44) | (std::uint64_t(q0.y) << 24) | (std::uint64_t(q0.z) << 4) |
+                               std::uint64_t(a));
+            }
+    }
+    std::sort(keys.begin(), keys.end());
+    return std::size_t(std::unique(keys.begin(), keys.end()) - keys.begin());
+}
+
+// Sign-changing edges of one leaf (12 edges, by the lab's tie rule).
+inline int sign_changing_edges(const Octree& t, const OctreeNode& nd) {
+    int n = 0;
+    for (int a = 0; a < 3; ++a)
+        for (int c = 0; c < 8; ++c)
+            if (!(c & (1 << a)) && (t.value(t.corner(nd, c)) <= 0.0) != (t.value(t.corner(nd, c | (1 << a))) <= 0.0)) ++n;
+    return n;
+}
+
+// The Cartesian box of a leaf.
+inline Box cell_box(const Octree& t, const OctreeNode& nd) {
+    return {t.lattice_point(t.corner(nd, 0)), t.lattice_point(t.corner(nd, 7))};
+}
+inline double box_outside(const Box& b, const glm::dvec3& p) {
+    glm::dvec3 d = glm::max(b.lo - p, p - b.hi);
+    return std::max({d.x, d.y, d.z, 0.0});
+}
+
+// The Cartesian pipeline without the one-shot function: build, vertices, optional simplify, contour.
+inline PolygonSoup cartesian_pipeline(const ScalarField& f, int level, double simplify_tolerance_in_h = 0.0,
+                                      Octree* out = nullptr) {
+    CartesianParams p;
+    p.max_level = level;
+    Octree t = build_octree(f, p);
+    place_vertices(t, {p.tau, p.crossing_tolerance});
+    if (simplify_tolerance_in_h > 0.0) simplify(t, simplify_tolerance_in_h * t.size / t.resolution(), p.tau);
+    PolygonSoup s = contour(t);
+    if (out) *out = std::move(t);
+    return s;
+}
+
+}  // namespace lab09

@@ -1,0 +1,105 @@
+// Lab 09, Task 7: the Cartesian one-shot function dual_contour_cartesian (handout §5.4).
+#include "helpers.hpp"
+
+using namespace lab09;
+
+namespace {
+PolygonSoup cartesian(const ScalarField& f, int level, DcStats* stats = nullptr) {
+    CartesianParams p;
+    p.max_level = level;
+    return dual_contour_cartesian(f, p, stats);
+}
+double finest_h(const ScalarField& f, int level) { return cartesian_domain(f, 0.05).second / double(1 << level); }
+}  // namespace
+
+TEST_SUITE("Task 7: Cartesian one-shot") {
+
+TEST_CASE("dual_contour_cartesian: sphere; off-centre sphere; torus and blob are closed 2-manifolds" *
+          geolab::points(2) *
+          geolab::hint("build_octree -> place_vertices -> simplify (when simplify_tolerance > 0) -> contour. A hole "
+                       "or a crack means neighbours disagree on an edge: shared lattice samples, each minimal edge "
+                       "once, the same tie rule everywhere. Handout §5.4.")) {
+    const std::pair<FieldPtr, const char*> shapes[] = {
+        {geolab::sphere({0, 0, 0}, 0.8), "sphere r = 0.8"},
+        {geolab::sphere({0.37, -0.21, 0.13}, 0.55), "off-centre sphere r = 0.55 at (0.37, -0.21, 0.13)"},
+        {geolab::torus({0, 0, 0}, 0.6, 0.25), "torus R = 0.6, r = 0.25"},
+        {geolab::named_implicit("blob"), "blob (smooth union of two spheres)"},
+    };
+    for (const auto& [f, name] : shapes) {
+        DcStats st;
+        const PolygonSoup s = cartesian(*f, 5, &st);
+        LAB09_CHECK_CLOSED_MANIFOLD(s, std::string(name) + ", level 5");
+        CHECK(st.vertices == s.n_vertices());
+        CHECK(st.faces == s.n_faces());
+        CHECK(components(s) == 1);
+    }
+}
+
+TEST_CASE("dual_contour_cartesian: a box and a cube give exactly 8 vertices and 12 triangles" * geolab::points(2) *
+          geolab::hint("Rank-1 faces, rank-2 edges and rank-3 corners fit their QEFs exactly, so the default "
+                       "simplification merges everything down to the 8 corner cells. Handout §5.2.")) {
+    for (const char* name : {"box", "cube"})
+        for (int level : {4, 6}) {
+            const FieldPtr f = geolab::named_implicit(name);
+            const PolygonSoup s = cartesian(*f, level);
+            INFO(name << " level " << level << ": " << s.n_vertices() << " vertices, " << s.n_faces() << " faces");
+            CHECK(s.n_vertices() == 8);
+            CHECK(s.n_faces() == 12);
+            LAB09_CHECK_CLOSED_MANIFOLD(s, name);
+            const double h = finest_h(*f, level);
+            CHECK(max_abs_f(*f, s) < 1e-6 * h);
+        }
+}
+
+TEST_CASE("dual_contour_cartesian: vertices lie on the surface; max |f(v)| <= 0.01 h at levels 7-8" *
+          geolab::points(2) *
+          geolab::hint("The reference measures max|f|/h = 0.0059 (sphere, level 7) and 0.0076 (torus, level 8). A "
+                       "larger error: crossings not converged (tolerance relative to the edge), normals not unit, "
+                       "QEF not solved about the mass point, or vertices clamped wrongly. Handout §5.1.")) {
+    const FieldPtr sphere = geolab::sphere({0.1, 0.0, -0.05}, 0.8), torus = geolab::torus({0, 0, 0}, 0.6, 0.25);
+    const std::pair<const ScalarField*, int> cases[] = {{sphere.get(), 7}, {torus.get(), 8}};
+    for (auto [f, level] : cases) {
+        const PolygonSoup s = cartesian(*f, level);
+        REQUIRE(s.n_vertices() > 0);
+        const double h = finest_h(*f, level), m = max_abs_f(*f, s);
+        INFO((f == sphere.get() ? "sphere" : "torus") << " level " << level << ": max |f(v)| = " << m << " = "
+                                                      << m / h << " h (limit 0.01 h)");
+        CHECK(m <= 0.01 * h);
+    }
+}
+
+TEST_CASE("dual_contour_cartesian: enclosed volume within 0.5% of the analytic volume; outward" * geolab::points(2) *
+          geolab::hint("Reference volume errors: sphere level 5 0.11%, torus level 6 0.10%. A negative volume "
+                       "means the faces wind inward. Handout §5.3.")) {
+    struct Case {
+        FieldPtr f;
+        double volume;
+        int level;
+        const char* name;
+    };
+    const Case cases[] = {
+        {geolab::sphere({0.2, 0.1, 0.0}, 0.7), sphere_volume(0.7), 5, "sphere r = 0.7"},
+        {geolab::torus({0, 0, 0.1}, 0.6, 0.25), torus_volume(0.6, 0.25), 6, "torus R = 0.6, r = 0.25"},
+    };
+    for (const Case& c : cases) {
+        const PolygonSoup s = cartesian(*c.f, c.level);
+        const double v = enclosed_volume(s);
+        INFO(c.name << " level " << c.level << ": volume " << v << ", analytic " << c.volume << ", relative error "
+                    << (v - c.volume) / c.volume);
+        CHECK(v > 0);
+        CHECK(std::abs(v - c.volume) <= 0.005 * c.volume);
+        CHECK(std::abs(signed_volume(s) - v) < 1e-9 * c.volume);
+    }
+}
+
+TEST_CASE("dual_contour_cartesian: bad parameters throw std::invalid_argument" * geolab::points(1) *
+          geolab::hint("max_level must be in [1, 10]; a field with empty bounds is rejected by cartesian_domain. "
+                       "Handout §5.4.")) {
+    const FieldPtr f = geolab::sphere({0, 0, 0}, 0.5);
+    const PolygonSoup ok = cartesian(*f, 3);
+    REQUIRE(ok.n_faces() > 0);
+    CHECK_THROWS_AS(cartesian(*f, 0), std::invalid_argument);
+    CHECK_THROWS_AS(cartesian(*f, 11), std::invalid_argument);
+}
+
+}  // TEST_SUITE

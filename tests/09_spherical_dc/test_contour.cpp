@@ -1,0 +1,278 @@
+// Lab 09, Tasks 4-6: dual vertices, simplification, polygons on the Cartesian octree (handout §5).
+#include "helpers.hpp"
+
+using namespace lab09;
+
+namespace {
+Octree tree_with_vertices(const ScalarField& f, int level) {
+    CartesianParams p;
+    p.max_level = level;
+    Octree t = build_octree(f, p);
+    place_vertices(t, {});
+    return t;
+}
+std::size_t leaves_with_vertex(const Octree& t) {
+    std::size_t n = 0;
+    for (std::uint32_t li : tree_shape(t).leaves) n += t.nodes[li].vertex != invalid_index;
+    return n;
+}
+}  // namespace
+
+TEST_SUITE("Task 4: vertex placement") {
+
+TEST_CASE("place_vertices: a vertex in exactly the leaves whose corners change sign; f <= 0 inside" *
+          geolab::points(2) *
+          geolab::hint("A leaf gets a vertex iff its 8 corner samples are not all on one side, where inside means "
+                       "f <= 0 (a sample that is exactly 0 is inside: the lattice box here has zeros on its faces). "
+                       "One QEF plane per sign-changing edge; each finest edge's crossing computed once. "
+                       "Handout §5.1.")) {
+    const LatticeBox lbox(4, 0.05, {3, 4, 5}, {12, 11, 10});
+    const FieldPtr ball = geolab::sphere({0.05, 0.1, -0.07}, 0.66);
+    const std::pair<const ScalarField*, const char*> fields[] = {{&lbox, "box with faces on lattice planes, level 4"},
+                                                                 {ball.get(), "sphere r = 0.66, level 4"}};
+    for (auto [f, name] : fields) {
+        CartesianParams p;
+        p.max_level = 4;
+        Octree t = build_octree(*f, p);
+        const std::size_t crossings = place_vertices(t, {});
+        INFO(name);
+        if (f == &lbox) {  // the fixture really has exact zeros at lattice points
+            std::size_t zeros = 0;
+            for (int i = 0; i <= 16; ++i)
+                for (int k = 0; k <= 16; ++k) zeros += t.value({i, 7, k}) == 0.0 && t.value({i, 11, k}) == 0.0;
+            REQUIRE(zeros > 0);
+        }
+        std::size_t wrong = 0, with_vertex = 0;
+        std::ostringstream first;
+        for (std::uint32_t li : tree_shape(t).leaves) {
+            const OctreeNode& nd = t.nodes[li];
+            const int in = inside_corners(t, nd);
+            const bool should = in > 0 && in < 8, has = nd.vertex != invalid_index;
+            with_vertex += has;
+            bool ok = should == has;
+            if (ok && has) {
+                REQUIRE(nd.vertex < t.vertices.size());
+                ok = t.vertices[nd.vertex].qef.count == sign_changing_edges(t, nd);
+            }
+            if (!ok && wrong++ < 3)
+                first << "\n  leaf (" << nd.x << ", " << nd.y << ", " << nd.z << ") level " << int(nd.level) << ": "
+                      << in << " inside corners (f <= 0), " << sign_changing_edges(t, nd)
+                      << " sign-changing edges, vertex " << (has ? "yes" : "no")
+                      << (has ? ", qef.count " + std::to_string(t.vertices[nd.vertex].qef.count) : std::string());
+        }
+        CHECK_MESSAGE(wrong == 0, wrong << " leaves have a wrong vertex / QEF" << first.str());
+        CHECK(with_vertex > 0);
+        CHECK(t.vertices.size() == with_vertex);
+        CHECK_MESSAGE(crossings == sign_changing_finest_edges(t),
+                      "place_vertices returned " << crossings << " crossings; distinct sign-changing edges: "
+                                                 << sign_changing_finest_edges(t));
+    }
+}
+
+TEST_CASE("place_vertices: vertices are clamped into their cells when the QEF minimiser leaves them" *
+          geolab::points(2) *
+          geolab::hint("The QEF minimiser can be far outside the cell (nearly parallel planes, noisy normals): clamp "
+                       "it to the cell's box. Where it is inside, keep it unchanged. Handout §5.1.")) {
+    const WobblyPlane f(0.1234);
+    const Octree t = tree_with_vertices(f, 4);
+    std::size_t outside = 0, solved_outside = 0, moved = 0, n = 0;
+    std::ostringstream first;
+    const double h = t.size / t.resolution();
+    for (std::uint32_t li : tree_shape(t).leaves) {
+        const OctreeNode& nd = t.nodes[li];
+        if (nd.vertex == invalid_index) continue;
+        REQUIRE(nd.vertex < t.vertices.size());
+        ++n;
+        const Box b = cell_box(t, nd);
+        const DualVertex& v = t.vertices[nd.vertex];
+        const glm::dvec3 x = v.qef.solve(0.01);
+        const double out = box_outside(b, v.position);
+        if (box_outside(b, x) > 1e-9 * h) ++solved_outside;
+        else if (glm::length(v.position - x) > 1e-9 * h) ++moved;
+        if (out > 1e-9 * h && outside++ < 3)
+            first << "\n  cell [" << str(b.lo) << ", " << str(b.hi) << "] has its vertex at " << str(v.position);
+    }
+    INFO("plane z = 0.1234 with gradients that swing around (WobblyPlane), level 4: " << n << " vertices, "
+         << solved_outside << " QEF minimisers outside their cells");
+    REQUIRE(n > 0);
+    REQUIRE(solved_outside > 0);
+    CHECK_MESSAGE(outside == 0, outside << " vertices lie outside their cells" << first.str());
+    CHECK_MESSAGE(moved == 0, moved << " vertices differ from their QEF minimiser although it lies in the cell");
+}
+
+TEST_CASE("place_vertices: the cells at a box's corners get the exact corners; every vertex is on the box" *
+          geolab::points(2) *
+          geolab::hint("Hermite data (crossing + unit normal) on every sign-changing edge, QEF solved with tau = 0.01: "
+                       "a corner cell has rank 3 and its vertex is the exact corner. Handout §5.1.")) {
+    const glm::dvec3 c(0.03, -0.02, 0.01), half(0.61, 0.47, 0.33);
+    const FieldPtr f = geolab::box(c, half);
+    const Octree t = tree_with_vertices(*f, 4);
+    const double h = t.size / t.resolution();
+    INFO("box centre " << str(c) << ", half extents " << str(half) << ", level 4, h = " << h);
+    for (int k = 0; k < 8; ++k) {
+        const glm::dvec3 corner = c + half * glm::dvec3(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1);
+        const std::uint32_t leaf = leaf_at(t, corner);
+        REQUIRE(leaf != invalid_index);
+        REQUIRE(t.nodes[leaf].vertex != invalid_index);
+        REQUIRE(t.nodes[leaf].vertex < t.vertices.size());
+        const glm::dvec3 v = t.vertices[t.nodes[leaf].vertex].position;
+        INFO("corner " << str(corner) << ": vertex of its cell " << str(v));
+        CHECK(glm::length(v - corner) < 1e-6 * h);
+    }
+    double worst = 0;
+    for (const DualVertex& v : t.vertices) worst = std::max(worst, std::abs(f->value(v.position)));
+    CHECK_MESSAGE(worst < 1e-6 * h, "max |f(vertex)| = " << worst << " (" << worst / h << " h)");
+}
+
+}  // TEST_SUITE
+
+TEST_SUITE("Task 5: simplification") {
+
+TEST_CASE("simplify: a box collapses to its 8 corner vertices" * geolab::points(2) *
+          geolab::hint("Bottom-up: 8 leaf children merge when the sign tests pass and the merged QEF's residual "
+                       "sqrt(Q / count) <= tolerance with its minimiser in the parent cell. Flat faces and straight "
+                       "edges fit exactly, so only the corners remain. Handout §5.2.")) {
+    const FieldPtr f = geolab::box({0.03, -0.02, 0.01}, {0.61, 0.47, 0.33});
+    Octree t = tree_with_vertices(*f, 5);
+    const std::size_t before = leaves_with_vertex(t);
+    const double h = t.size / t.resolution();
+    const std::size_t collapses = simplify(t, 1e-5 * h, 0.01);
+    const std::size_t after = leaves_with_vertex(t);
+    INFO("box, level 5: leaves with a vertex " << before << " before, " << after << " after " << collapses
+                                               << " collapses");
+    CHECK(collapses > 0);
+    CHECK(after == 8);
+    CHECK(tree_shape(t).bad_children == 0);
+    for (std::uint32_t li : tree_shape(t).leaves) {
+        const OctreeNode& nd = t.nodes[li];
+        if (nd.vertex == invalid_index) continue;
+        REQUIRE(nd.vertex < t.vertices.size());
+        const glm::dvec3 v = t.vertices[nd.vertex].position;
+        CHECK_MESSAGE(std::abs(f->value(v)) < 1e-6 * h, "vertex " << str(v) << " is off the box");
+        CHECK(box_outside(cell_box(t, nd), v) < 1e-9 * h);
+    }
+}
+
+TEST_CASE("simplify: at the default tolerance a curved surface keeps its finest vertices" * geolab::points(1) *
+          geolab::hint("The tolerance is a length (1e-5 h here): a sphere's merged QEF never fits that well, so no "
+                       "cell with a vertex collapses (empty cells may). Handout §5.2.")) {
+    const FieldPtr f = geolab::sphere({0.0, 0.0, 0.0}, 0.8);
+    Octree t = tree_with_vertices(*f, 5);
+    const std::size_t before = leaves_with_vertex(t);
+    simplify(t, 1e-5 * t.size / t.resolution(), 0.01);
+    const std::size_t after = leaves_with_vertex(t);
+    INFO("sphere r = 0.8, level 5: leaves with a vertex " << before << " before, " << after << " after");
+    REQUIRE(before > 0);
+    CHECK(after == before);
+}
+
+TEST_CASE("simplify: the topology tests keep two nearby solids apart at any tolerance" * geolab::points(2) *
+          geolab::hint("Collapse only when the parent's corner signs form one sheet AND every edge midpoint; face "
+                       "centre and the cell centre agree with a corner of that edge/face/cell (Ju et al. 2002). "
+                       "Handout §5.2.")) {
+    // two boxes whose facing sides are 1.3 finest cells apart, the gap centred in a level-4 cell: the parent's
+    // corners are inside (left and right), its middle outside
+    const double h = 1.76 / 32, gap_mid = -0.88 + 2 * h * 8.5;
+    const FieldPtr slabs = geolab::csg_union(geolab::box({(-0.8 + gap_mid - 0.65 * h) / 2, 0, 0},
+                                                         {(0.8 + gap_mid - 0.65 * h) / 2, 0.6, 0.6}),
+                                             geolab::box({(0.8 + gap_mid + 0.65 * h) / 2, 0, 0},
+                                                         {(0.8 - gap_mid - 0.65 * h) / 2, 0.6, 0.6}));
+    const FieldPtr spheres =
+        geolab::csg_union(geolab::sphere({-0.45, 0.0, 0.0}, 0.4), geolab::sphere({0.45, 0.0, 0.0}, 0.4));
+    const std::pair<FieldPtr, const char*> cases[] = {
+        {slabs, "two boxes x in [-0.8, 0.019] and [0.091, 0.8] (gap 1.3 h)"},
+        {spheres, "two spheres r = 0.4 at x = -0.45 and 0.45 (gap 0.1)"}};
+    for (const auto& [f, name] : cases) {
+        Octree t;
+        const PolygonSoup s = cartesian_pipeline(*f, 5, 1e6, &t);  // tolerance 1e6 h: residuals never stop a collapse
+        INFO(name << ", level 5, simplified with a huge tolerance");
+        REQUIRE(std::abs(t.size / t.resolution() - (f == slabs ? h : t.size / 32)) < 1e-12);
+        LAB09_CHECK_CLOSED_MANIFOLD(s, name);
+        CHECK(components(s) == 2);
+        CHECK(edge_report(s).euler() == 4);
+        const double ht = t.size / t.resolution();
+        for (std::uint32_t li : tree_shape(t).leaves) {
+            const OctreeNode& nd = t.nodes[li];
+            if (nd.vertex == invalid_index) continue;
+            REQUIRE(nd.vertex < t.vertices.size());
+            CHECK(box_outside(cell_box(t, nd), t.vertices[nd.vertex].position) < 1e-9 * ht);
+        }
+    }
+}
+
+}  // TEST_SUITE
+
+TEST_SUITE("Task 6: contouring polygons") {
+
+TEST_CASE("contour: sphere and torus give closed oriented 2-manifolds (chi 2 and 0)" * geolab::points(2) *
+          geolab::hint("One polygon per sign-changing minimal edge, through the vertices of the 4 leaves around "
+                       "it (locate at the edge midpoint +- half a finest cell), each edge once. Handout §5.3.")) {
+    const FieldPtr sphere = geolab::sphere({0.02, -0.03, 0.05}, 0.7), torus = geolab::torus({0, 0, 0}, 0.6, 0.25);
+    const PolygonSoup a = cartesian_pipeline(*sphere, 5), b = cartesian_pipeline(*torus, 5);
+    LAB09_CHECK_CLOSED_MANIFOLD(a, "sphere level 5");
+    LAB09_CHECK_CLOSED_MANIFOLD(b, "torus level 5");
+    CHECK(edge_report(a).euler() == 2);
+    CHECK(edge_report(b).euler() == 0);
+    CHECK(components(a) == 1);
+    CHECK(components(b) == 1);
+}
+
+TEST_CASE("contour: one quad (two triangles) per sign-changing edge; every vertex used" * geolab::points(1) *
+          geolab::hint("Emit each sign-changing edge once (it is seen by up to 4 leaves); split each quad into 2 "
+                       "triangles; the soup holds only referenced vertices. Handout §5.3.")) {
+    const FieldPtr f = geolab::sphere({0.02, -0.03, 0.05}, 0.7);
+    Octree t;
+    const PolygonSoup s = cartesian_pipeline(*f, 4, 0.0, &t);
+    const std::size_t edges = sign_changing_finest_edges(t), with_vertex = leaves_with_vertex(t);
+    INFO("sphere level 4: " << edges << " sign-changing edges, " << with_vertex << " leaves with a vertex; soup has "
+                            << s.n_faces() << " faces and " << s.n_vertices() << " vertices");
+    CHECK(s.is_triangle_soup());
+    CHECK(s.n_faces() == 2 * edges);
+    CHECK(s.n_vertices() == with_vertex);
+    CHECK(edge_report(s).referenced_vertices == s.n_vertices());
+}
+
+TEST_CASE("contour: winding follows the sign (outward normals; the inside-out field flips every face)" *
+          geolab::points(2) *
+          geolab::hint("Counter-clockwise around the edge's axis when the edge's LOWER end is inside (f <= 0), "
+                       "reversed otherwise. Do not orient by geometry: -f has the same surface with inside and "
+                       "outside swapped. Handout §5.3.")) {
+    const FieldPtr f = geolab::torus({0.0, 0.05, 0.0}, 0.6, 0.25);
+    const Negated g(f);
+    const PolygonSoup a = cartesian_pipeline(*f, 5), b = cartesian_pipeline(g, 5);
+    REQUIRE(a.n_faces() > 0);
+    REQUIRE(b.n_faces() > 0);
+    const double va = enclosed_volume(a), vb = enclosed_volume(b);
+    INFO("torus level 5: volume " << va << " (expected > 0); inside-out torus: " << vb << " (expected " << -va << ")");
+    CHECK(va > 0);
+    CHECK(std::abs(vb + va) < 1e-9 * va);
+    for (int k = 0; k < 2; ++k) {
+        const PolygonSoup& s = k ? b : a;
+        const ScalarField& field = k ? static_cast<const ScalarField&>(g) : *f;
+        std::size_t against = 0;
+        for (std::size_t i = 0; i < s.n_faces(); ++i) {
+            auto vs = s.face(i);
+            REQUIRE(vs.size() >= 3);
+            const glm::dvec3 p0 = s.positions[vs[0]], p1 = s.positions[vs[1]], p2 = s.positions[vs[2]];
+            const glm::dvec3 n = glm::cross(p1 - p0, p2 - p0);
+            if (glm::dot(n, field.gradient((p0 + p1 + p2) / 3.0)) < 0) ++against;
+        }
+        CHECK_MESSAGE(against == 0, (k ? "inside-out torus: " : "torus: ")
+                                        << against << " of " << s.n_faces() << " triangles face against grad f");
+    }
+}
+
+TEST_CASE("contour: a box with faces on lattice planes (f = 0 at lattice points) is closed and exact" *
+          geolab::points(2) *
+          geolab::hint("Use the same tie rule (f <= 0 inside) in place_vertices and contour: a sample that is exactly "
+                       "0 must be on the same side for both, or cells around an edge lack vertices. Handout §5.3.")) {
+    const LatticeBox f(5, 0.05, {6, 9, 11}, {25, 20, 23});
+    const PolygonSoup s = cartesian_pipeline(f, 5);
+    LAB09_CHECK_CLOSED_MANIFOLD(s, "lattice box level 5");
+    const glm::dvec3 e = f.hi_ - f.lo_;
+    const double exact = e.x * e.y * e.z, got = enclosed_volume(s);
+    INFO("box volume " << exact << ", mesh volume " << got);
+    CHECK(std::abs(got - exact) < 1e-6 * exact);
+}
+
+}  // TEST_SUITE

@@ -1,0 +1,117 @@
+// Lab 09, Task 3: the Cartesian octree with conservative refinement (handout §4).
+#include "helpers.hpp"
+
+using namespace lab09;
+
+namespace {
+CartesianParams params(int level) {
+    CartesianParams p;
+    p.max_level = level;
+    return p;
+}
+
+// Every surface sample must lie in a leaf of level L (checked through the given Octree::locate).
+void check_surface_cells_are_finest(const Octree& t, const ScalarField& f, const std::string& label) {
+    const double h = t.size / t.resolution();
+    Box box = f.bounds();
+    box.lo -= h, box.hi += h;
+    const auto samples = surface_samples(f, box, 0.3 * h);
+    INFO(label << ": " << samples.size() << " surface samples, grid step 0.3 h, h = " << h);
+    REQUIRE(samples.size() > 100);
+    std::size_t bad = 0;
+    std::ostringstream first;
+    for (const auto& p : samples) {
+        const std::uint32_t leaf = leaf_at(t, p);
+        REQUIRE(leaf != invalid_index);
+        if (t.nodes[leaf].level != t.max_level && bad++ < 3)
+            first << "\n  surface point " << str(p) << " is in a leaf of level " << int(t.nodes[leaf].level)
+                  << " (cell " << t.nodes[leaf].x << ", " << t.nodes[leaf].y << ", " << t.nodes[leaf].z << ")";
+    }
+    CHECK_MESSAGE(bad == 0, bad << " surface samples lie in leaves coarser than max_level " << t.max_level
+                                << first.str());
+}
+}  // namespace
+
+TEST_SUITE("Task 3: Cartesian octree") {
+
+TEST_CASE("build_octree: every finest cell the sphere passes through is a leaf at max_level" * geolab::points(2) *
+          geolab::hint("Refine while |f(centre)| <= Lf * (half diagonal of the cell): a Lipschitz field cannot reach "
+                       "0 inside a cell whose centre is farther than that. Corner signs alone miss surfaces that "
+                       "enter and leave a cell between its corners. Handout §4.2.")) {
+    const FieldPtr f = geolab::sphere({0.1, -0.2, 0.05}, 0.7);
+    for (int level : {4, 6}) {
+        const Octree t = build_octree(*f, params(level));
+        const auto [lo, side] = cartesian_domain(*f, 0.05);
+        INFO("sphere centre (0.1, -0.2, 0.05) radius 0.7, level " << level);
+        REQUIRE(t.nodes.size() > 1);
+        CHECK(t.max_level == level);
+        CHECK(t.coordinates == Coordinates::cartesian);
+        CHECK(glm::length(t.min_corner - lo) < 1e-12);
+        CHECK(std::abs(t.size - side) < 1e-12);
+        check_surface_cells_are_finest(t, *f, "sphere level " + std::to_string(level));
+    }
+}
+
+TEST_CASE("build_octree: refines exactly the cells allowed by the conservative test; leaves tile the cube" *
+          geolab::points(2) *
+          geolab::hint("Internal nodes: |f(c)| <= Lf * half diagonal; leaves above max_level: |f(c)| > Lf * half "
+                       "diagonal (do not refine everything: the tree must stay sparse). Use Octree::split so "
+                       "children follow the c = cx + 2cy + 4cz order. Handout §4.2.")) {
+    const FieldPtr f = geolab::torus({0.05, 0.0, -0.1}, 0.6, 0.25);
+    const int L = 5;
+    const Octree t = build_octree(*f, params(L));
+    const TreeShape shape = tree_shape(t);
+    INFO("torus R = 0.6, r = 0.25, level " << L << ": " << shape.leaves.size() << " leaves");
+    REQUIRE(shape.leaves.size() > 8);
+    CHECK(shape.bad_children == 0);
+    CHECK(shape.deeper_than_max == 0);
+    double volume = 0;
+    const double h = t.size / t.resolution();
+    std::size_t too_coarse = 0, too_fine = 0;
+    // every reachable node: the rule, from its centre sample
+    std::vector<std::uint32_t> stack{0};
+    while (!stack.empty()) {
+        const std::uint32_t n = stack.back();
+        stack.pop_back();
+        const OctreeNode& nd = t.nodes[n];
+        const std::int32_t s = t.cell_span(nd.level);
+        const glm::dvec3 c = t.min_corner + h * (glm::dvec3(nd.x, nd.y, nd.z) * double(s) + 0.5 * s);
+        const double half_diag = 0.5 * std::sqrt(3.0) * h * s;
+        const double v = std::abs(f->value(c)), bound = f->lipschitz() * half_diag;
+        if (nd.is_leaf()) {
+            volume += std::pow(h * s, 3);
+            if (nd.level < L && v <= bound * (1 - 1e-9)) ++too_coarse;
+        } else {
+            if (v > bound * (1 + 1e-9)) ++too_fine;
+            for (int k = 0; k < 8; ++k) stack.push_back(nd.first_child + k);
+        }
+    }
+    CHECK_MESSAGE(too_coarse == 0, too_coarse << " leaves above max_level pass the test |f(c)| <= Lf * half diagonal "
+                                              "(they may contain the surface and must be split)");
+    CHECK_MESSAGE(too_fine == 0, too_fine << " nodes were split although |f(c)| > Lf * half diagonal (over-refined)");
+    CHECK(std::abs(volume - std::pow(t.size, 3)) < 1e-9 * std::pow(t.size, 3));
+    CHECK(shape.leaves.size() < std::size_t(1) << (3 * L - 2));
+}
+
+TEST_CASE("build_octree: a thin torus (tube thinner than the coarse cells) is refined all along" * geolab::points(2) *
+          geolab::hint("A tube of radius 0.015 never contains a lattice corner of the coarse levels: only the "
+                       "conservative distance test sees it. Handout §4.2.")) {
+    const FieldPtr f = geolab::torus({0.0, 0.0, 0.0}, 0.6, 0.015);
+    for (int level : {5, 6}) {
+        const Octree t = build_octree(*f, params(level));
+        REQUIRE(t.nodes.size() > 1);
+        check_surface_cells_are_finest(t, *f, "thin torus R = 0.6, r = 0.015, level " + std::to_string(level));
+    }
+}
+
+TEST_CASE("build_octree: max_level outside 1..10 throws std::invalid_argument" * geolab::points(1) *
+          geolab::hint("Check the level first (Octree::init_cartesian does it too). Handout §4.1.")) {
+    const FieldPtr f = geolab::sphere({0, 0, 0}, 0.5);
+    const Octree ok = build_octree(*f, params(3));
+    REQUIRE(ok.nodes.size() > 1);
+    CHECK_THROWS_AS(build_octree(*f, params(0)), std::invalid_argument);
+    CHECK_THROWS_AS(build_octree(*f, params(11)), std::invalid_argument);
+    CHECK_THROWS_AS(build_octree(*f, params(-2)), std::invalid_argument);
+}
+
+}  // TEST_SUITE

@@ -1,0 +1,202 @@
+// Lab 09, Tasks 8-9: the origin of the spherical octree (handout §6): Welzl's smallest enclosing sphere and the
+// eq. (6) correction that moves the origin off the surface.
+#include "helpers.hpp"
+
+using namespace lab09;
+
+namespace {
+void check_encloses(const std::vector<glm::dvec3>& pts, const Sphere& s, double scale) {
+    std::size_t outside = 0;
+    double worst = 0;
+    for (const auto& p : pts) {
+        const double d = glm::length(p - s.center) - s.radius;
+        if (d > 1e-9 * scale) ++outside;
+        worst = std::max(worst, d);
+    }
+    CHECK_MESSAGE(outside == 0, outside << " points outside the sphere (worst by " << worst << ")");
+}
+}  // namespace
+
+TEST_SUITE("Task 8: smallest enclosing sphere") {
+
+TEST_CASE("minimal_enclosing_sphere: known configurations" * geolab::points(2) *
+          geolab::hint("Welzl: a point outside the current sphere lies on the boundary of the smallest sphere of "
+                       "the points so far. The support set has 1-4 points; an obtuse triangle's sphere is the one of "
+                       "its longest side, not its circumsphere. Handout §6.1.")) {
+    const double s3 = std::sqrt(3.0);
+    struct Case {
+        const char* name;
+        std::vector<glm::dvec3> pts;
+        glm::dvec3 center;
+        double radius;
+    };
+    const glm::dvec3 o(1.5, -2.0, 0.5);
+    const double a = 0.8;  // tetrahedron (±1,±1,±1) with an even number of minus signs, edge 2√2 a
+    const std::vector<Case> cases = {
+        {"one point", {o}, o, 0.0},
+        {"two points", {o, o + glm::dvec3(0.6, 0.0, 0.8)}, o + glm::dvec3(0.3, 0.0, 0.4), 0.5},
+        {"equilateral triangle, side 1", {o, o + glm::dvec3(1, 0, 0), o + glm::dvec3(0.5, s3 / 2, 0)},
+         o + glm::dvec3(0.5, s3 / 6, 0), 1 / s3},
+        {"obtuse triangle (sphere of the longest side)", {o, o + glm::dvec3(2, 0, 0), o + glm::dvec3(1.0, 0.3, 0.2)},
+         o + glm::dvec3(1, 0, 0), 1.0},
+        {"regular tetrahedron", {o + a * glm::dvec3(1, 1, 1), o + a * glm::dvec3(1, -1, -1),
+                                 o + a * glm::dvec3(-1, 1, -1), o + a * glm::dvec3(-1, -1, 1)},
+         o, a * s3},
+        {"regular tetrahedron plus its centre and edge midpoints",
+         {o + a * glm::dvec3(1, 1, 1), o, o + a * glm::dvec3(1, 0, 0), o + a * glm::dvec3(1, -1, -1),
+          o + a * glm::dvec3(0, 1, 0), o + a * glm::dvec3(-1, 1, -1), o + a * glm::dvec3(0, 0, -1),
+          o + a * glm::dvec3(-1, -1, 1)},
+         o, a * s3},
+        {"octahedron vertices", {o + glm::dvec3(1, 0, 0), o - glm::dvec3(1, 0, 0), o + glm::dvec3(0, 1, 0),
+                                 o - glm::dvec3(0, 1, 0), o + glm::dvec3(0, 0, 1), o - glm::dvec3(0, 0, 1)},
+         o, 1.0},
+    };
+    for (const Case& c : cases) {
+        const Sphere s = minimal_enclosing_sphere(c.pts);
+        INFO(c.name << ": got centre " << str(s.center) << " radius " << s.radius << ", expected centre "
+                    << str(c.center) << " radius " << c.radius);
+        CHECK(std::abs(s.radius - c.radius) < 1e-9);
+        CHECK(glm::length(s.center - c.center) < 1e-7);
+        check_encloses(c.pts, s, 1.0);
+    }
+    // many points on a unit sphere (including 6 axis points) and inside it: the unit sphere itself
+    Lcg rng(21);
+    std::vector<glm::dvec3> pts;
+    for (int i = 0; i < 300; ++i) pts.push_back(o + (i % 3 ? 1.0 : rng.uniform(0.0, 0.99)) * rng.unit_vector());
+    for (int k = 0; k < 6; ++k) {
+        glm::dvec3 e(0.0);
+        e[k / 2] = k % 2 ? -1.0 : 1.0;
+        pts.push_back(o + e);
+    }
+    const Sphere s = minimal_enclosing_sphere(pts);
+    INFO("306 points on and in the unit sphere about " << str(o) << ": got centre " << str(s.center) << " radius "
+                                                       << s.radius);
+    CHECK(std::abs(s.radius - 1.0) < 1e-9);
+    CHECK(glm::length(s.center - o) < 1e-6);
+    check_encloses(pts, s, 1.0);
+    const Sphere e = minimal_enclosing_sphere({});
+    CHECK(e.radius == 0.0);
+}
+
+TEST_CASE("minimal_enclosing_sphere: random point sets match a brute-force search" * geolab::points(3) *
+          geolab::hint("The result must contain every point AND be the smallest such sphere (the brute force tries "
+                       "every support set of <= 4 points). A sphere from the bounding box or a centroid is not "
+                       "minimal. Handout §6.1.")) {
+    Lcg rng(1234);
+    for (int trial = 0; trial < 40; ++trial) {
+        const int n = 5 + trial % 11;
+        std::vector<glm::dvec3> pts;
+        const glm::dvec3 shift(rng.uniform(-5, 5), rng.uniform(-5, 5), rng.uniform(-5, 5));
+        const double scale = std::pow(10.0, rng.uniform(-2, 2));
+        for (int i = 0; i < n; ++i) {
+            glm::dvec3 p(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
+            if (trial % 4 == 1) p *= glm::dvec3(1.0, 0.2, 0.05);  // flat clouds
+            if (trial % 4 == 2) p = glm::normalize(p);           // on a sphere
+            pts.push_back(shift + scale * p);
+        }
+        const Sphere s = minimal_enclosing_sphere(pts);
+        const Sphere b = brute_force_enclosing_sphere(pts, 1e-10 * scale);
+        INFO("trial " << trial << ": " << n << " points, scale " << scale << "; got radius " << s.radius
+                      << ", brute force " << b.radius);
+        check_encloses(pts, s, scale);
+        CHECK(s.radius <= b.radius * (1 + 1e-9) + 1e-12 * scale);
+        CHECK(s.radius >= b.radius * (1 - 1e-9) - 1e-12 * scale);
+    }
+}
+
+}  // TEST_SUITE
+
+TEST_SUITE("Task 9: origin correction") {
+
+TEST_CASE("correct_origin: starting exactly on the surface; the path leaves it in a few bounded steps" *
+          geolab::points(2) *
+          geolab::hint("Eq. (6): x += s * delta * unit * grad f / |grad f| until s * f(x) >= margin * unit. A step "
+                       "is delta * unit long whatever |grad f| is; on the surface (f = 0) pick the side whose probe "
+                       "has the larger |f|. Handout §6.2.")) {
+    const FieldPtr sphere = geolab::sphere({0, 0, 0}, 1.0), box = geolab::box({0, 0, 0}, {1.0, 0.8, 0.6});
+    const std::pair<const ScalarField*, glm::dvec3> starts[] = {
+        {sphere.get(), {1.0, 0.0, 0.0}}, {sphere.get(), {0.0, 0.0, -1.0}}, {box.get(), {0.3, 0.8, 0.1}}};
+    for (auto [f, x0] : starts) {
+        REQUIRE(f->value(x0) == 0.0);
+        OriginParams op;
+        op.unit = 0.05;
+        const auto path = correct_origin(*f, x0, op);
+        INFO("start " << str(x0) << " on the " << (f == sphere.get() ? "unit sphere" : "box") << ", unit 0.05: "
+                      << path.size() << " positions, last " << (path.empty() ? "-" : str(path.back())));
+        REQUIRE(path.size() >= 2);
+        CHECK(path.front() == x0);
+        CHECK(path.size() <= 4);
+        for (std::size_t i = 1; i < path.size(); ++i) {
+            CHECK(std::abs(glm::length(path[i] - path[i - 1]) - op.delta * op.unit) < 1e-9);
+            CHECK(glm::length(path[i] - x0) <= i * op.delta * op.unit + 1e-9);
+        }
+        CHECK(std::abs(f->value(path.back())) >= op.margin * op.unit);
+    }
+}
+
+TEST_CASE("correct_origin: moves to the nearer side along the gradient; stops at once when far enough" *
+          geolab::points(2) *
+          geolab::hint("s = sign f(x0): slightly outside goes further out (+grad f), slightly inside goes in "
+                       "(-grad f). |f(x0)| >= margin * unit returns {x0}. Handout §6.2.")) {
+    const FieldPtr f = geolab::sphere({0.2, -0.1, 0.3}, 0.9);
+    OriginParams op;
+    op.unit = 0.02;
+    for (double off : {0.3, -0.3, 0.01, -0.01}) {
+        const glm::dvec3 dir = glm::normalize(glm::dvec3(1.0, 2.0, -0.5));
+        const glm::dvec3 x0 = glm::dvec3(0.2, -0.1, 0.3) + (0.9 + off * op.unit) * dir;
+        const auto path = correct_origin(*f, x0, op);
+        INFO("start at f = " << f->value(x0) << " (" << off << " unit): " << path.size() << " positions, last f = "
+                             << (path.empty() ? 0.0 : f->value(path.back())));
+        REQUIRE(path.size() >= 2);
+        const double fe = f->value(path.back());
+        if (off > 0) CHECK(fe >= op.margin * op.unit);
+        else CHECK(fe <= -op.margin * op.unit);
+        for (std::size_t i = 1; i < path.size(); ++i) {
+            const glm::dvec3 step = path[i] - path[i - 1];
+            CHECK(glm::dot(glm::normalize(step), (off > 0 ? 1.0 : -1.0) * dir) > 1 - 1e-9);
+        }
+    }
+    const glm::dvec3 far(0.2, -0.1, 0.3 + 0.9 + 2.5 * op.unit);
+    const auto path = correct_origin(*f, far, op);
+    INFO("start at f = 2.5 unit (margin 2): " << path.size() << " positions");
+    REQUIRE(path.size() == 1);
+    CHECK(path[0] == far);
+}
+
+TEST_CASE("correct_origin: unit <= 0 throws std::invalid_argument" * geolab::points(1) *
+          geolab::hint("dual_contour_spherical fills unit in; a direct call must pass a positive length.")) {
+    const FieldPtr f = geolab::sphere({0, 0, 0}, 1.0);
+    OriginParams op;
+    op.unit = 0.1;
+    const auto path = correct_origin(*f, {1.0, 0.0, 0.0}, op);
+    REQUIRE(path.size() >= 2);
+    op.unit = 0.0;
+    CHECK_THROWS_AS(correct_origin(*f, {1.0, 0.0, 0.0}, op), std::invalid_argument);
+    op.unit = -1.0;
+    CHECK_THROWS_AS(correct_origin(*f, {1.0, 0.0, 0.0}, op), std::invalid_argument);
+}
+
+TEST_CASE("dual_contour_spherical: an origin on the surface is corrected and the mesh stays closed" *
+          geolab::points(1) *
+          geolab::hint("Radii about an origin ON the surface degenerate (the paper's diverging vertices): apply "
+                       "correct_origin first and use its last position; DcStats::origin_path records it. "
+                       "Handout §6.2.")) {
+    const FieldPtr f = geolab::sphere({0, 0, 0}, 0.8);
+    SphericalParams p;
+    p.max_level = 5;
+    p.origin = glm::dvec3(0.0, 0.8, 0.0);
+    DcStats st;
+    const PolygonSoup s = dual_contour_spherical(*f, p, &st);
+    const double unit = 1.6 / 32;
+    INFO("sphere r = 0.8, origin (0, 0.8, 0) on the surface, level 5: path of " << st.origin_path.size()
+                                                                               << " positions, origin "
+                                                                               << str(st.origin));
+    REQUIRE(st.origin_path.size() >= 2);
+    CHECK(st.origin_path.front() == glm::dvec3(0.0, 0.8, 0.0));
+    CHECK(st.origin_path.back() == st.origin);
+    CHECK(std::abs(f->value(st.origin)) >= 2.0 * unit * (1 - 1e-9));
+    LAB09_CHECK_CLOSED_MANIFOLD(s, "sphere, corrected origin");
+    CHECK(std::abs(enclosed_volume(s) - sphere_volume(0.8)) < 0.02 * sphere_volume(0.8));
+}
+
+}  // TEST_SUITE

@@ -1,0 +1,155 @@
+// Lab 09, Task 1: the quadratic error function (handout §2). Every test builds Qefs with Qef::add and calls
+// Qef::solve / Qef::error, so an unimplemented stub fails them all.
+#include "helpers.hpp"
+
+using namespace lab09;
+
+namespace {
+// Brute-force Q(x) = Σ (nᵢ · (x − pᵢ))².
+struct Planes {
+    std::vector<glm::dvec3> p, n;
+    void add(const glm::dvec3& point, const glm::dvec3& normal) { p.push_back(point), n.push_back(glm::normalize(normal)); }
+    Qef qef() const {
+        Qef q;
+        for (std::size_t i = 0; i < p.size(); ++i) q.add(p[i], n[i]);
+        return q;
+    }
+    double error(const glm::dvec3& x) const {
+        double s = 0;
+        for (std::size_t i = 0; i < p.size(); ++i) s += std::pow(glm::dot(n[i], x - p[i]), 2);
+        return s;
+    }
+    glm::dvec3 mass() const {
+        glm::dvec3 m(0.0);
+        for (auto& q : p) m += q;
+        return m / double(p.size());
+    }
+};
+}  // namespace
+
+TEST_SUITE("Task 1: QEF") {
+
+TEST_CASE("qef: rank 1 near-planar data gives the mass point projected onto the plane" * geolab::points(2) *
+          geolab::hint("tau = 0.01 truncates every eigenvalue of AtA below 0.01 * lambda_max: a (nearly) flat patch "
+                       "has rank 1, and the solution must not drift along the plane. Solve about the mass point m: "
+                       "x = m + (AtA)+ (Atb - AtA m). Handout §2.2.")) {
+    // points on the plane z = 2.3 spread over a unit cell far from the origin, normals tilted by up to 2e-3 rad
+    Lcg rng(7);
+    Planes pl;
+    const glm::dvec3 cell(5.0, -3.0, 2.0);
+    for (int i = 0; i < 12; ++i) {
+        glm::dvec3 p = cell + glm::dvec3(rng.uniform(), rng.uniform(), 0.0);
+        p.z = 2.3;
+        pl.add(p, glm::dvec3(rng.uniform(-2e-3, 2e-3), rng.uniform(-2e-3, 2e-3), 1.0));
+    }
+    const Qef q = pl.qef();
+    int rank = -1;
+    glm::dvec3 m(0.0);
+    const glm::dvec3 x = q.solve(0.01, &m, &rank);
+    glm::dvec3 expected = pl.mass();
+    expected.z = 2.3;
+    INFO("12 points on z = 2.3 in the cell [5,6]x[-3,-2], normals within 2e-3 rad of +Z");
+    INFO("solve returned " << str(x) << ", expected about " << str(expected) << ", rank " << rank);
+    CHECK(rank == 1);
+    CHECK(glm::length(m - pl.mass()) < 1e-12);
+    CHECK_MESSAGE(glm::length(glm::dvec2(x.x - expected.x, x.y - expected.y)) < 1e-2,
+                  "the solution drifted along the plane (no truncation, or not solved about the mass point)");
+    CHECK(std::abs(x.z - 2.3) < 1e-2);
+    // exactly planar: exact projection of the mass point
+    Planes flat;
+    for (int i = 0; i < 5; ++i) flat.add(cell + glm::dvec3(0.2 * i, 0.9 - 0.15 * i, 0.25), glm::dvec3(0, 0, 1));
+    const glm::dvec3 y = flat.qef().solve(0.01, nullptr, &rank);
+    glm::dvec3 ey = flat.mass();
+    CAPTURE(str(y));
+    CHECK(rank == 1);
+    CHECK(glm::length(y - ey) < 1e-9);
+}
+
+TEST_CASE("qef: rank 2 edge gives the point of the edge line nearest the mass point" * geolab::points(1) *
+          geolab::hint("Two plane families (a sharp edge) determine 2 directions; along the edge line the solution "
+                       "keeps the mass point's coordinate. Handout §2.2.")) {
+    // planes n1·x = d1 and n2·x = d2 (60 degrees apart), points along their common line and off it on each plane
+    const glm::dvec3 n1 = glm::normalize(glm::dvec3(1, 0, 0.2)), n2 = glm::normalize(glm::dvec3(-0.5, 0.866, 0.1));
+    const glm::dvec3 dir = glm::normalize(glm::cross(n1, n2));
+    const glm::dvec3 on_line(0.7, -0.4, 1.3);  // a point of the edge line
+    Planes pl;
+    Lcg rng(11);
+    for (int i = 0; i < 6; ++i) {
+        glm::dvec3 t1 = glm::normalize(glm::cross(n1, dir));  // in plane 1, away from the edge
+        glm::dvec3 t2 = glm::normalize(glm::cross(n2, dir));
+        pl.add(on_line + rng.uniform(-0.3, 0.3) * dir + rng.uniform(0.0, 0.2) * t1, n1);
+        pl.add(on_line + rng.uniform(-0.3, 0.3) * dir + rng.uniform(0.0, 0.2) * t2, n2);
+    }
+    int rank = -1;
+    const glm::dvec3 x = pl.qef().solve(0.01, nullptr, &rank);
+    // expected: on the line, at the mass point's coordinate along it
+    const glm::dvec3 expected = on_line + glm::dot(pl.mass() - on_line, dir) * dir;
+    INFO("solve returned " << str(x) << ", expected " << str(expected) << ", rank " << rank);
+    CHECK(rank == 2);
+    CHECK(glm::length(x - expected) < 1e-9);
+}
+
+TEST_CASE("qef: rank 3 box corner is solved exactly" * geolab::points(1) *
+          geolab::hint("Three independent normals: no truncation, x is the exact intersection of the planes.")) {
+    for (int rotated = 0; rotated < 2; ++rotated) {
+        const glm::dvec3 corner(1.25, -0.5, 3.0);
+        glm::dvec3 axes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+        if (rotated) {
+            axes[0] = glm::normalize(glm::dvec3(1, 1, 0));
+            axes[1] = glm::normalize(glm::dvec3(-1, 1, 1));
+            axes[2] = glm::normalize(glm::cross(axes[0], axes[1]));
+        }
+        Planes pl;
+        // 3 faces of the box at the corner, 3 points each
+        for (int a = 0; a < 3; ++a)
+            for (int k = 1; k <= 3; ++k)
+                pl.add(corner - 0.1 * k * axes[(a + 1) % 3] - 0.07 * (4 - k) * axes[(a + 2) % 3], axes[a]);
+        int rank = -1;
+        const Qef q = pl.qef();
+        const glm::dvec3 x = q.solve(0.01, nullptr, &rank);
+        INFO((rotated ? "rotated" : "axis-aligned") << " corner " << str(corner) << ": solve returned " << str(x)
+                                                    << ", rank " << rank);
+        CHECK(rank == 3);
+        CHECK(glm::length(x - corner) < 1e-9);
+        CHECK(std::abs(q.error(x)) < 1e-12);
+    }
+}
+
+TEST_CASE("qef: error(x) equals the brute-force sum of squares; accumulated in double" * geolab::points(2) *
+          geolab::hint("Q(x) = xT AtA x - 2 xT Atb + btb with every sum in double (float loses everything here: "
+                       "the points are near 1e4 while Q is of order 1). Handout §2.1.")) {
+    Lcg rng(3);
+    Planes pl;
+    const glm::dvec3 far(1.0e4, -2.0e4, 3.0e4);
+    for (int i = 0; i < 20; ++i) pl.add(far + glm::dvec3(rng.uniform(), rng.uniform(), rng.uniform()), rng.unit_vector());
+    const Qef q = pl.qef();
+    CHECK(q.count == 20);
+    CHECK(glm::length(q.mass_sum / 20.0 - pl.mass()) < 1e-9);
+    double ata[6] = {0, 0, 0, 0, 0, 0}, btb = 0;
+    glm::dvec3 atb(0.0);
+    for (std::size_t i = 0; i < pl.p.size(); ++i) {
+        const glm::dvec3& n = pl.n[i];
+        double d = glm::dot(n, pl.p[i]);
+        ata[0] += n.x * n.x, ata[1] += n.x * n.y, ata[2] += n.x * n.z, ata[3] += n.y * n.y, ata[4] += n.y * n.z,
+            ata[5] += n.z * n.z;
+        atb += d * n, btb += d * d;
+    }
+    for (int k = 0; k < 6; ++k) CHECK(std::abs(q.ata[k] - ata[k]) < 1e-12);
+    CHECK(glm::length(q.atb - atb) < 1e-10 * glm::length(atb));
+    CHECK(std::abs(q.btb - btb) < 1e-12 * btb);
+    for (int i = 0; i < 10; ++i) {
+        const glm::dvec3 x = far + glm::dvec3(rng.uniform(-1, 2), rng.uniform(-1, 2), rng.uniform(-1, 2));
+        const double got = q.error(x), want = pl.error(x);
+        INFO("x = " << str(x) << ": error(x) = " << got << ", brute force " << want);
+        CHECK(std::abs(got - want) < 1e-5 * std::max(1.0, want));
+    }
+    // an empty Qef
+    Qef empty;
+    int rank = -1;
+    const glm::dvec3 z = empty.solve(0.01, nullptr, &rank);
+    CHECK(rank == 0);
+    CHECK(glm::length(z) == 0.0);
+    CHECK(empty.error(glm::dvec3(1, 2, 3)) == 0.0);
+}
+
+}  // TEST_SUITE

@@ -1,0 +1,379 @@
+// Lab 09, Tasks 10-11: the spherical-coordinate octree (handout §7) and the polar holes (handout §8).
+#include "helpers.hpp"
+
+using namespace lab09;
+
+namespace {
+PolygonSoup spherical(const ScalarField& f, int level, PoleFill::Method fill = PoleFill::normal_projection,
+                      DcStats* stats = nullptr, std::optional<glm::dvec3> origin = std::nullopt) {
+    SphericalParams p;
+    p.max_level = level;
+    p.pole_fill = fill;
+    p.origin = origin;
+    return dual_contour_spherical(f, p, stats);
+}
+double unit_of(const ScalarField& f, int level) {
+    const Box b = f.bounds();
+    const glm::dvec3 e = b.hi - b.lo;
+    return std::max({e.x, e.y, e.z}) / double(1 << level);
+}
+// The parameter box of a node: r, theta, phi intervals.
+struct ParamBox {
+    double r0, r1, t0, t1, p0, p1;
+};
+ParamBox param_box(const Octree& t, const OctreeNode& nd) {
+    const double n = t.resolution(), s = t.cell_span(nd.level);
+    const double dr = t.r_max - t.r_min;
+    return {t.r_min + dr * nd.x * s / n,       t.r_min + dr * (nd.x + 1) * s / n, kPi * nd.y * s / n,
+            kPi * (nd.y + 1) * s / n,          2 * kPi * nd.z * s / n,            2 * kPi * (nd.z + 1) * s / n};
+}
+}  // namespace
+
+TEST_SUITE("Task 10: spherical octree") {
+
+TEST_CASE("build_spherical_octree: cells halve r; theta and phi; refinement follows the ball rule" *
+          geolab::points(2) *
+          geolab::hint("The root is always split. A cell is split iff |f(c)| <= Lf * R, c the point at the parameter "
+                       "midpoint, R = max over r in {r_lo, r_hi} of sqrt(r2 + rc2 - 2 r rc cos(gamma)), gamma the "
+                       "largest angle between c's direction and the 4 angular corners. Handout §7.2.")) {
+    const FieldPtr f = geolab::sphere({0.2, -0.15, 0.1}, 0.6);
+    const glm::dvec3 origin(0.05, 0.02, -0.03);
+    const int L = 5;
+    const Octree t = build_spherical_octree(*f, L, origin, 0.0, 1.3);
+    const TreeShape shape = tree_shape(t);
+    INFO("sphere r = 0.6 at (0.2, -0.15, 0.1), origin " << str(origin) << ", shell [0, 1.3], level " << L << ": "
+                                                        << shape.leaves.size() << " leaves");
+    REQUIRE(t.nodes.size() > 1);
+    CHECK(t.coordinates == Coordinates::spherical);
+    CHECK(t.max_level == L);
+    CHECK(t.origin == origin);
+    CHECK(t.r_min == 0.0);
+    CHECK(t.r_max == 1.3);
+    CHECK(!t.nodes[0].is_leaf());
+    CHECK(shape.bad_children == 0);
+    CHECK(shape.deeper_than_max == 0);
+    double cells = 0;  // parameter volume in finest cells
+    std::size_t too_coarse = 0, too_fine = 0;
+    std::ostringstream first;
+    std::vector<std::uint32_t> stack{0};
+    while (!stack.empty()) {
+        const std::uint32_t n = stack.back();
+        stack.pop_back();
+        const OctreeNode& nd = t.nodes[n];
+        if (nd.is_leaf()) cells += std::pow(double(t.cell_span(nd.level)), 3);
+        else
+            for (int k = 0; k < 8; ++k) stack.push_back(nd.first_child + k);
+        if (nd.level == 0 || (nd.is_leaf() && nd.level == L)) continue;
+        const ParamBox b = param_box(t, nd);
+        const double rc = 0.5 * (b.r0 + b.r1), tc = 0.5 * (b.t0 + b.t1), pc = 0.5 * (b.p0 + b.p1);
+        const glm::dvec3 uc = cart_of(1.0, tc, pc);
+        double cos_g = 1.0;
+        for (double th : {b.t0, b.t1})
+            for (double ph : {b.p0, b.p1}) cos_g = std::min(cos_g, glm::dot(uc, cart_of(1.0, th, ph)));
+        double R = 0;
+        for (double r : {b.r0, b.r1}) R = std::max(R, std::sqrt(std::max(0.0, r * r + rc * rc - 2 * r * rc * cos_g)));
+        const double v = std::abs(f->value(origin + rc * uc)), bound = f->lipschitz() * R;
+        if (nd.is_leaf() && v <= bound * (1 - 1e-9) && too_coarse++ < 3)
+            first << "\n  leaf level " << int(nd.level) << " (" << nd.x << ", " << nd.y << ", " << nd.z
+                  << ") not split: |f(c)| = " << v << " <= Lf R = " << bound;
+        if (!nd.is_leaf() && v > bound * (1 + 1e-9) && too_fine++ < 3)
+            first << "\n  node level " << int(nd.level) << " (" << nd.x << ", " << nd.y << ", " << nd.z
+                  << ") split although |f(c)| = " << v << " > Lf R = " << bound;
+    }
+    CHECK_MESSAGE(too_coarse == 0, too_coarse << " leaves should have been split" << first.str());
+    CHECK_MESSAGE(too_fine == 0, too_fine << " nodes should not have been split" << first.str());
+    CHECK(cells == std::pow(double(t.resolution()), 3));
+}
+
+TEST_CASE("build_spherical_octree: every finest cell the surface passes through is a leaf at max level" *
+          geolab::points(1) *
+          geolab::hint("The ball of radius R around c must contain the whole curved cell; a smaller radius (e.g. "
+                       "the chord of one angle only) misses cells where the surface grazes a corner. "
+                       "Handout §7.2.")) {
+    const FieldPtr f = geolab::torus({0.1, 0.0, 0.05}, 0.55, 0.2);
+    const glm::dvec3 origin(0.0, 0.03, 0.0);
+    for (int L : {4, 5}) {
+        const Octree t = build_spherical_octree(*f, L, origin, 0.0, 1.1);
+        REQUIRE(t.nodes.size() > 1);
+        const auto samples = surface_samples(*f, f->bounds(), 0.01);
+        INFO("torus R = 0.55, r = 0.2, origin " << str(origin) << ", shell [0, 1.1], level " << L << ", "
+                                                << samples.size() << " surface samples");
+        REQUIRE(samples.size() > 1000);
+        std::size_t bad = 0;
+        std::ostringstream first;
+        for (const auto& p : samples) {
+            const std::uint32_t leaf = leaf_at(t, p);
+            REQUIRE(leaf != invalid_index);
+            if (t.nodes[leaf].level != L && bad++ < 3)
+                first << "\n  surface point " << str(p) << " is in a leaf of level " << int(t.nodes[leaf].level);
+        }
+        CHECK_MESSAGE(bad == 0, bad << " surface samples in leaves coarser than max level" << first.str());
+    }
+}
+
+TEST_CASE("place_vertices (spherical): each vertex lies in its cell in (r theta phi); phi relative to the cell" *
+          geolab::points(2) *
+          geolab::hint("Clamp r, theta and phi of the QEF solution to the cell's intervals. phi must be measured "
+                       "relative to the cell's lower bound modulo 2pi: a cell next to the seam has phi up to 2pi while "
+                       "to_spherical returns values near 0 just past it. Handout §7.3.")) {
+    const WobblySphere f({0.15, 0.1, -0.05}, 0.7);
+    const glm::dvec3 origin(0.0, 0.0, 0.0);
+    Octree t = build_spherical_octree(f, 4, origin, 0.0, 1.2);
+    place_vertices(t, {});
+    std::size_t n = 0, solved_outside = 0, outside = 0, moved = 0, seam = 0, wrong_clamp = 0;
+    std::ostringstream first;
+    const double eps = 1e-9;
+    for (std::uint32_t li : tree_shape(t).leaves) {
+        const OctreeNode& nd = t.nodes[li];
+        if (nd.vertex == invalid_index) continue;
+        REQUIRE(nd.vertex < t.vertices.size());
+        ++n;
+        const ParamBox b = param_box(t, nd);
+        seam += b.p1 == 2 * kPi;
+        auto out_of = [&](const glm::dvec3& x) {
+            const Sph s = sph_of(x - origin);
+            double d = std::max({b.r0 - s.r, s.r - b.r1, b.t0 - s.theta, s.theta - b.t1, 0.0});
+            if (std::hypot(x.x - origin.x, x.y - origin.y) > 1e-12) d = std::max(d, phi_outside(s.phi, b.p0, b.p1 - b.p0));
+            return d;
+        };
+        const glm::dvec3 v = t.vertices[nd.vertex].position, x = t.vertices[nd.vertex].qef.solve(0.01);
+        if (out_of(x) > eps) {
+            ++solved_outside;
+            // the expected clamp: r and theta to their intervals, phi to the nearer end of the cell's arc
+            Sph s = sph_of(x - origin);
+            s.r = std::clamp(s.r, b.r0, b.r1);
+            s.theta = std::clamp(s.theta, b.t0, b.t1);
+            const double w = b.p1 - b.p0, d = std::fmod(s.phi - b.p0 + 4 * kPi, 2 * kPi);
+            const double phi = d <= w ? b.p0 + d : (d - w < 2 * kPi - d ? b.p1 : b.p0);
+            const glm::dvec3 want = origin + cart_of(s.r, s.theta, phi);
+            if (glm::length(v - want) > 1e-9 && wrong_clamp++ < 3)
+                first << "\n  cell phi [" << b.p0 << ", " << b.p1 << "]: QEF solution at phi " << sph_of(x - origin).phi
+                      << " clamped to " << str(v) << ", expected " << str(want) << " (phi " << phi << ")";
+        } else if (glm::length(v - x) > 1e-9) {
+            ++moved;
+        }
+        if (out_of(v) > eps && outside++ < 3) {
+            const Sph s = sph_of(v - origin);
+            first << "\n  cell r [" << b.r0 << ", " << b.r1 << "] theta [" << b.t0 << ", " << b.t1 << "] phi [" << b.p0
+                  << ", " << b.p1 << "]: vertex at r " << s.r << " theta " << s.theta << " phi " << s.phi;
+        }
+    }
+    INFO("WobblySphere r = 0.7 at (0.15, 0.1, -0.05), origin 0, level 4: " << n << " vertices, " << solved_outside
+                                                                          << " QEF minimisers outside their cells, "
+                                                                          << seam << " vertices in seam cells");
+    REQUIRE(n > 0);
+    REQUIRE(solved_outside > 0);
+    CHECK(seam > 0);
+    CHECK_MESSAGE(outside == 0, outside << " vertices outside their cells" << first.str());
+    CHECK_MESSAGE(moved == 0, moved << " vertices differ from their QEF minimiser although it lies in the cell");
+    CHECK_MESSAGE(wrong_clamp == 0, wrong_clamp << " vertices are not the clamp of their QEF minimiser (phi to the "
+                                                   "NEARER end of the cell's arc, across the seam)" << first.str());
+}
+
+TEST_CASE("dual_contour_spherical: a sphere across the phi = 0 seam leaves no crack" * geolab::points(2) *
+          geolab::hint("The lattice's phi index is taken modulo N: the cells at phi index N-1 and 0 are neighbours "
+                       "(Octree::canonical / locate wrap it). Look up the 4 leaves around an edge with the wrapped "
+                       "index. Handout §7.4.")) {
+    const FieldPtr off = geolab::sphere({0.5, 0.0, 0.0}, 0.4);        // cut by the half-plane phi = 0, misses the axis
+    const FieldPtr around = geolab::sphere({0.3, -0.05, 0.1}, 0.6);   // contains the origin, seam and both poles
+    const std::pair<FieldPtr, const char*> cases[] = {{off, "sphere r = 0.4 at (0.5, 0, 0), origin (0, 0, 0)"},
+                                                      {around, "sphere r = 0.6 at (0.3, -0.05, 0.1), origin 0"}};
+    for (const auto& [f, name] : cases)
+        for (int L : {4, 5}) {
+            DcStats st;
+            const PolygonSoup s = spherical(*f, L, PoleFill::normal_projection, &st, glm::dvec3(0.0));
+            INFO(name << ", level " << L << ", origin used " << str(st.origin) << ", " << st.pole_rings
+                      << " pole rings");
+            LAB09_CHECK_CLOSED_MANIFOLD(s, name);
+            CHECK(components(s) == 1);
+            CHECK(edge_report(s).euler() == 2);
+        }
+}
+
+TEST_CASE("dual_contour_spherical: sphere; torus and blob are closed; volume within 0.5%" * geolab::points(1) *
+          geolab::hint("Reference volume errors at level 6: sphere 0.11%, torus 0.18%. Handout §7.4.")) {
+    struct Case {
+        FieldPtr f;
+        double volume;
+        const char* name;
+    };
+    const Case cases[] = {{geolab::sphere({0.1, 0.0, -0.1}, 0.7), sphere_volume(0.7), "sphere r = 0.7"},
+                          {geolab::torus({0, 0, 0}, 0.6, 0.25), torus_volume(0.6, 0.25), "torus R = 0.6, r = 0.25"},
+                          {geolab::named_implicit("blob"), 0.0, "blob"}};
+    for (const Case& c : cases) {
+        const PolygonSoup s = spherical(*c.f, 6);
+        LAB09_CHECK_CLOSED_MANIFOLD(s, std::string(c.name) + " level 6");
+        if (c.volume > 0) {
+            const double v = enclosed_volume(s);
+            INFO(c.name << " level 6: volume " << v << ", analytic " << c.volume << ", relative error "
+                        << (v - c.volume) / c.volume);
+            CHECK(std::abs(v - c.volume) <= 0.005 * c.volume);
+        }
+    }
+}
+
+TEST_CASE("dual_contour_spherical: a sphere needs fewer vertices than on the Cartesian octree (Table 1)" *
+          geolab::points(1) *
+          geolab::hint("About its centre a sphere crosses only radial edges: one vertex per (theta, phi) cell. "
+                       "Reference counts at levels 4/5/6: Cartesian 1016/3992/15968, spherical 258/1026/4098.")) {
+    const FieldPtr f = geolab::sphere({0.0, 0.0, 0.0}, 0.8);
+    for (int L : {4, 5, 6}) {
+        CartesianParams cp;
+        cp.max_level = L;
+        const PolygonSoup c = dual_contour_cartesian(*f, cp), s = spherical(*f, L);
+        INFO("sphere level " << L << ": Cartesian " << c.n_vertices() << " vertices, spherical " << s.n_vertices());
+        REQUIRE(s.n_vertices() > 0);
+        CHECK(c.n_vertices() > s.n_vertices());
+        LAB09_CHECK_CLOSED_MANIFOLD(s, "spherical sphere");
+    }
+}
+
+TEST_CASE("build_spherical_octree and dual_contour_spherical: bad parameters throw std::invalid_argument" *
+          geolab::points(1) *
+          geolab::hint("max_level in [1, 10], 0 <= r_min < r_max. Handout §7.1.")) {
+    const FieldPtr f = geolab::sphere({0, 0, 0}, 0.5);
+    const Octree ok = build_spherical_octree(*f, 3, glm::dvec3(0.0), 0.0, 1.0);
+    REQUIRE(ok.nodes.size() > 1);
+    CHECK_THROWS_AS(build_spherical_octree(*f, 0, glm::dvec3(0.0), 0.0, 1.0), std::invalid_argument);
+    CHECK_THROWS_AS(build_spherical_octree(*f, 11, glm::dvec3(0.0), 0.0, 1.0), std::invalid_argument);
+    CHECK_THROWS_AS(build_spherical_octree(*f, 3, glm::dvec3(0.0), 1.0, 1.0), std::invalid_argument);
+    CHECK_THROWS_AS(build_spherical_octree(*f, 3, glm::dvec3(0.0), 1.2, 1.0), std::invalid_argument);
+    CHECK_THROWS_AS(build_spherical_octree(*f, 3, glm::dvec3(0.0), -0.1, 1.0), std::invalid_argument);
+    SphericalParams p;
+    p.max_level = 3;
+    REQUIRE(dual_contour_spherical(*f, p).n_faces() > 0);
+    p.max_level = 11;
+    CHECK_THROWS_AS(dual_contour_spherical(*f, p), std::invalid_argument);
+    p.max_level = 3;
+    p.r_min = 2.0;
+    p.r_max = 1.0;
+    CHECK_THROWS_AS(dual_contour_spherical(*f, p), std::invalid_argument);
+}
+
+}  // TEST_SUITE
+
+TEST_SUITE("Task 11: poles") {
+
+TEST_CASE("dual_contour_spherical: normal_projection closes both poles (2 rings; 2 ghosts on the axis)" *
+          geolab::points(2) *
+          geolab::hint("contour returns one PoleRing per sign-changing radial edge ON the polar axis, north AND "
+                       "south; fill_poles closes each with a fan around a ghost vertex on the axis. The paper left "
+                       "the second pole as future work: it is part of this task. Handout §8.")) {
+    const FieldPtr f = geolab::sphere({0.05, -0.02, 0.03}, 0.8);
+    for (int L : {4, 5}) {
+        DcStats st;
+        const PolygonSoup s = spherical(*f, L, PoleFill::normal_projection, &st);
+        INFO("sphere r = 0.8, level " << L << ": " << st.pole_rings << " rings, " << st.ghost_vertices << " ghosts");
+        LAB09_CHECK_CLOSED_MANIFOLD(s, "sphere with poles filled by normal projection");
+        CHECK(st.pole_rings == 2);
+        REQUIRE(st.pole_fill.ghost_vertices.size() == 2);
+        int north = 0, south = 0;
+        for (std::uint32_t g : st.pole_fill.ghost_vertices) {
+            REQUIRE(g < s.n_vertices());
+            const glm::dvec3 p = s.positions[g] - st.origin;
+            INFO("ghost " << str(s.positions[g]) << " (origin " << str(st.origin) << "), f = " << f->value(s.positions[g]));
+            CHECK(std::abs(p.x) < 1e-12);
+            CHECK(std::abs(p.y) < 1e-12);
+            (p.z > 0 ? north : south) += 1;
+            CHECK(std::abs(f->value(s.positions[g])) < 0.25 * unit_of(*f, L));  // reference: 0.10 / 0.05 unit
+        }
+        CHECK(north == 1);
+        CHECK(south == 1);
+    }
+}
+
+TEST_CASE("dual_contour_spherical: vertical_projection also closes; none leaves exactly 2 holes" * geolab::points(2) *
+          geolab::hint("PoleFill::none adds nothing: the mesh then has one boundary loop around each pole (and no "
+                       "other defect). vertical_projection is the earlier ghost node: a flat cap at the ring's mean "
+                       "height. Handout §8.")) {
+    const FieldPtr f = geolab::sphere({0.05, -0.02, 0.03}, 0.8);
+    DcStats sv, sn;
+    const PolygonSoup v = spherical(*f, 5, PoleFill::vertical_projection, &sv);
+    const PolygonSoup n = spherical(*f, 5, PoleFill::none, &sn);
+    LAB09_CHECK_CLOSED_MANIFOLD(v, "sphere level 5, vertical projection");
+    CHECK(sv.ghost_vertices == 2);
+    const EdgeReport r = edge_report(n);
+    INFO("PoleFill::none: " << describe(r) << ", " << boundary_loops(n) << " boundary loops");
+    REQUIRE(r.faces > 0);
+    CHECK(boundary_loops(n) == 2);
+    CHECK(r.boundary > 0);
+    CHECK(r.non_manifold == 0);
+    CHECK(r.misoriented == 0);
+    CHECK(sn.pole_rings == 2);
+    CHECK(sn.ghost_vertices == 0);
+    CHECK(n.n_faces() + 2 * 0 < v.n_faces());
+    CHECK(v.n_faces() - n.n_faces() == r.boundary);  // one fan triangle per boundary edge
+}
+
+TEST_CASE("fill_poles: hand-built rings get the ghost where the tangent planes meet; clamped; fans outward" *
+          geolab::points(2) *
+          geolab::hint("normal_projection: s* = sum (n.a)(n.(v - o)) / sum (n.a)^2 with n = grad f / |grad f| at each "
+                       "ring vertex, a = +Z (north) or -Z (south); vertical_projection: the mean of a.(v - o); then "
+                       "clamp s* to [r_lo, r_hi]. Fan (ghost, ring[i], ring[i+1]). Handout §8.")) {
+    const glm::dvec3 o(0.3, -0.2, 0.5);
+    const FieldPtr f = geolab::sphere(o, 1.0);
+    const int n = 12;
+    const double h = 0.9, rho = std::sqrt(1 - h * h);
+    auto make = [&](std::vector<PoleRing>& rings) {
+        PolygonSoup soup;
+        for (int pole = 0; pole < 2; ++pole) {
+            PoleRing pr;
+            pr.north = pole == 0;
+            pr.r_lo = 0.7;
+            pr.r_hi = pole == 0 ? 1.2 : 1.05;  // the south ghost is clamped
+            for (int i = 0; i < n; ++i) {
+                // north: increasing phi (counter-clockwise seen from +Z); south: decreasing phi
+                const double phi = 2 * kPi * i / n * (pole == 0 ? 1 : -1);
+                pr.ring.push_back(std::uint32_t(soup.positions.size()));
+                soup.positions.push_back(o + glm::dvec3(rho * std::cos(phi), rho * std::sin(phi), pole == 0 ? h : -h));
+            }
+            rings.push_back(pr);
+        }
+        soup.add_face({0, 1, 2});  // an existing face, kept
+        return soup;
+    };
+    const double expected_normal[2] = {1.0 / h, 1.05}, expected_vertical[2] = {h, h};
+    for (auto method : {PoleFill::normal_projection, PoleFill::vertical_projection}) {
+        std::vector<PoleRing> rings;
+        PolygonSoup soup = make(rings);
+        const PoleFillResult r = fill_poles(soup, rings, *f, o, method);
+        const bool normal = method == PoleFill::normal_projection;
+        INFO((normal ? "normal_projection" : "vertical_projection") << ": rings of " << n
+                                                                    << " vertices at height +-0.9 on a unit sphere");
+        REQUIRE(r.ghost_vertices.size() == 2);
+        CHECK(r.first_face == 1);
+        CHECK(r.n_faces == std::size_t(2 * n));
+        CHECK(soup.n_faces() == std::size_t(1 + 2 * n));
+        CHECK(soup.n_vertices() == std::size_t(2 * n + 2));
+        CHECK(r.ring_vertices.size() == std::size_t(2 * n));
+        for (int pole = 0; pole < 2; ++pole) {
+            const std::uint32_t g = r.ghost_vertices[pole];
+            REQUIRE(g < soup.n_vertices());
+            const double s = (normal ? expected_normal : expected_vertical)[pole];
+            const glm::dvec3 want = o + glm::dvec3(0, 0, pole == 0 ? s : -s);
+            INFO((pole == 0 ? "north" : "south") << " ghost at " << str(soup.positions[g]) << ", expected "
+                                                 << str(want));
+            CHECK(glm::length(soup.positions[g] - want) < 1e-9);
+        }
+        REQUIRE(soup.n_faces() == std::size_t(1 + 2 * n));
+        for (std::size_t fi = 1; fi < soup.n_faces(); ++fi) {
+            auto vs = soup.face(fi);
+            REQUIRE(vs.size() == 3);
+            const int pole = int((fi - 1) / n), i = int((fi - 1) % n);
+            CHECK(vs[0] == r.ghost_vertices[pole]);
+            CHECK(vs[1] == rings[pole].ring[i]);
+            CHECK(vs[2] == rings[pole].ring[(i + 1) % n]);
+            const glm::dvec3 p0 = soup.positions[vs[0]], p1 = soup.positions[vs[1]], p2 = soup.positions[vs[2]];
+            CHECK(glm::dot(glm::cross(p1 - p0, p2 - p0), (p0 + p1 + p2) / 3.0 - o) > 0);
+        }
+    }
+    std::vector<PoleRing> rings;
+    PolygonSoup soup = make(rings);
+    const PoleFillResult r = fill_poles(soup, rings, *f, o, PoleFill::none);
+    CHECK(r.ghost_vertices.empty());
+    CHECK(r.n_faces == 0);
+    CHECK(soup.n_faces() == 1);
+    CHECK(soup.n_vertices() == std::size_t(2 * n));
+}
+
+}  // TEST_SUITE
