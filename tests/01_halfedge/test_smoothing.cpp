@@ -79,6 +79,12 @@ TEST_SUITE("Task 5: smoothing") {
         Mesh m = build_valid(soup, "icosphere(2)");
         laplacian_smoothing(m, 0.5, 2);
         const auto ref = reference_smoothing_step(soup, reference_smoothing_step(soup, soup.positions, 0.5), 0.5);
+        {  // the picture in the report: your smoothed sphere next to the expected one
+            PolygonSoup yours = soup, expected = soup;
+            yours.positions = m.positions();
+            expected.positions = ref;
+            geolab::attach_mesh_figure("sphere-2-steps", yours, expected);
+        }
         glm::dvec3 centroid(0.0);
         double mean_radius = 0;
         for (Vertex v : m.vertices()) centroid += m.position(v), mean_radius += glm::length(m.position(v));

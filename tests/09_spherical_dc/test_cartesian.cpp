@@ -1,4 +1,5 @@
 // Lab 09, Task 7: the Cartesian one-shot function dual_contour_cartesian (handout §5.4).
+#include "geolab/fixtures.hpp"
 #include "helpers.hpp"
 
 using namespace lab09;
@@ -32,6 +33,11 @@ TEST_CASE("dual_contour_cartesian: sphere; off-centre sphere; torus and blob are
         CHECK(st.vertices == s.n_vertices());
         CHECK(st.faces == s.n_faces());
         CHECK(components(s) == 1);
+        if (f == shapes[0].first) {  // the picture in the report: your sphere next to the exact one
+            PolygonSoup exact = geolab::fixtures::icosphere(4);
+            for (auto& p : exact.positions) p *= 0.8;
+            geolab::attach_mesh_figure("sphere-level5", s, exact);
+        }
     }
 }
 
