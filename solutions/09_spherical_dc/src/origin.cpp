@@ -98,9 +98,9 @@ std::vector<glm::dvec3> correct_origin(const ScalarField& f, const glm::dvec3& x
                 glm::dvec3 e(0.0);
                 e[a] = sg;
                 double v = s * f.value(x + s * step * e);
-                if (v > best_v) best_v = v, best = s * e;
+                if (v > best_v) best_v = v, best = e;
             }
-        return best;  // s · best is the step direction, like ∇f/|∇f|
+        return best;  // the step is s · best: along ∇f/|∇f| outward (s = 1), against it inward (s = -1)
     };
     // the side: the one we are on; exactly on the surface, the side whose probe is farther from it
     double s = fx > 0.0 ? 1.0 : -1.0;
