@@ -187,13 +187,7 @@ int main(int argc, char** argv) {
     tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);
 #endif
     // run_with_ratios of common/ratio_main.hpp, with a reporter that also keeps CPU medians
-    std::vector<char*> args(argv, argv + argc);
-    std::string reps = "--benchmark_repetitions=5";
-    bool has_reps = false;
-    for (int i = 1; i < argc; ++i) has_reps |= std::string(argv[i]).rfind("--benchmark_repetitions", 0) == 0;
-    if (!has_reps) args.push_back(reps.data());
-    int n = static_cast<int>(args.size());
-    benchmark::Initialize(&n, args.data());
+    geolab::bench::initialize_with_repetitions(argc, argv);
     DcReporter reporter;
     benchmark::RunSpecifiedBenchmarks(&reporter);
 

@@ -50,15 +50,20 @@ public:
     }
 };
 
-//! Run the registered benchmarks (default: 5 repetitions, medians) and print the ratios.
-inline int run_with_ratios(int argc, char** argv, const std::map<std::string, double>& goals) {
+//! benchmark::Initialize with 5 repetitions unless the command line asks for another number.
+inline void initialize_with_repetitions(int argc, char** argv) {
+    static std::string reps = "--benchmark_repetitions=5";
     std::vector<char*> args(argv, argv + argc);
-    std::string reps = "--benchmark_repetitions=5";
     bool has_reps = false;
     for (int i = 1; i < argc; ++i) has_reps |= std::string(argv[i]).rfind("--benchmark_repetitions", 0) == 0;
     if (!has_reps) args.push_back(reps.data());
     int n = static_cast<int>(args.size());
     benchmark::Initialize(&n, args.data());
+}
+
+//! Run the registered benchmarks (default: 5 repetitions, medians) and print the ratios.
+inline int run_with_ratios(int argc, char** argv, const std::map<std::string, double>& goals) {
+    initialize_with_repetitions(argc, argv);
     RatioReporter reporter;
     benchmark::RunSpecifiedBenchmarks(&reporter);
     reporter.print_ratios(goals);
