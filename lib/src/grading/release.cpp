@@ -1,4 +1,5 @@
 #include "geolab/grading/release.hpp"
+#include "text_file.hpp"
 
 #include <algorithm>
 #include <cstdlib>
@@ -22,20 +23,8 @@ std::string trim(const std::string& s) {
     return s.substr(a, b - a + 1);
 }
 
-std::string read_file(const fs::path& p) {
-    std::ifstream f(p, std::ios::binary);
-    if (!f) throw std::runtime_error(p.string() + ": cannot read");
-    std::ostringstream os;
-    os << f.rdbuf();
-    return os.str();
-}
-
-void write_file(const fs::path& p, const std::string& text) {
-    fs::create_directories(p.parent_path());
-    std::ofstream f(p, std::ios::binary);
-    f << text;
-    if (!f) throw std::runtime_error(p.string() + ": cannot write");
-}
+using detail::read_text;
+using detail::write_text;
 
 // The lab folders that have solutions: solutions/NN_name with a src/ folder.
 std::vector<fs::path> solution_labs(const fs::path& root) {
@@ -71,7 +60,7 @@ std::set<std::string> solution_shingles(const fs::path& root) {
     for (const auto& sol : solution_labs(root))
         for (const auto& e : fs::recursive_directory_iterator(sol)) {
             if (!e.is_regular_file()) continue;
-            std::istringstream in(read_file(e.path()));
+            std::istringstream in(read_text(e.path()));
             std::string line, block;
             bool open = false;
             while (std::getline(in, line)) {
@@ -92,7 +81,7 @@ std::set<std::string> solution_shingles(const fs::path& root) {
     for (const auto& sol : solution_labs(root))
         for (const auto& e : fs::recursive_directory_iterator(sol)) {
             if (!e.is_regular_file()) continue;
-            auto l = meaningful_lines(strip_solutions(read_file(e.path()), e.path().string()));
+            auto l = meaningful_lines(strip_solutions(read_text(e.path()), e.path().string()));
             for (std::size_t i = 0; i + 2 < l.size(); ++i) needles.erase(shingle(l, i));
         }
     return needles;
@@ -146,14 +135,14 @@ std::vector<LabDiff> generate_labs(const fs::path& root, bool write) {
             if (!e.is_regular_file()) continue;
             const fs::path rel = fs::relative(lab_src / e.path().filename(), root);
             expected.insert(e.path().filename());
-            std::string want = strip_solutions(read_file(e.path()), fs::relative(e.path(), root).string());
+            std::string want = strip_solutions(read_text(e.path()), fs::relative(e.path(), root).string());
             const fs::path target = lab_src / e.path().filename();
             if (!fs::exists(target)) {
                 diffs.push_back({rel, "missing"});
-                if (write) write_file(target, want);
-            } else if (read_file(target) != want) {
+                if (write) write_text(target, want);
+            } else if (read_text(target) != want) {
                 diffs.push_back({rel, "differs from what the generator makes"});
-                if (write) write_file(target, want);
+                if (write) write_text(target, want);
             }
         }
         if (fs::is_directory(lab_src))
@@ -199,7 +188,7 @@ std::vector<fs::path> make_release(const fs::path& root, const fs::path& out, bo
     // Leak scan: no marker and no line that exists only inside a solution block may appear in the release.
     const auto answers = solution_shingles(root);
     for (const auto& rel : written) {
-        const std::string text = read_file(out / rel);
+        const std::string text = read_text(out / rel);
         if (rel.begin()->string() == "labs" && text.find(begin_marker) != std::string::npos)
             throw std::runtime_error((out / rel).string() + ": contains a solution marker: the release would leak answers");
         // Binary files are skipped; so are the released tests, whose brute-force checks may share a few lines

@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "geolab/grading/release.hpp"
+#include "text_file.hpp"
 
 namespace geolab::grading {
 namespace fs = std::filesystem;
@@ -22,22 +23,8 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-std::string read_text(const fs::path& p) {
-    std::ifstream f(p, std::ios::binary);
-    if (!f) throw std::runtime_error(p.string() + ": cannot read");
-    std::ostringstream os;
-    os << f.rdbuf();
-    return os.str();
-}
-
-void write_text(const fs::path& p, const std::string& text, fs::perms perms = fs::perms(0644)) {
-    fs::create_directories(p.parent_path());
-    std::ofstream f(p, std::ios::binary | std::ios::trunc);
-    f << text;
-    f.close();
-    if (!f) throw std::runtime_error(p.string() + ": cannot write");
-    fs::permissions(p, perms);
-}
+using detail::read_text;
+using detail::write_text;
 
 // A folder only root may enter, or that others may only traverse (0711).
 void make_dir(const fs::path& p, unsigned mode) {
