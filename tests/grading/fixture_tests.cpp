@@ -2,6 +2,7 @@
 #include <csignal>
 #include <cstdlib>
 #include <iostream>
+#include <stdexcept>
 #include <thread>
 #include <vector>
 
@@ -17,6 +18,9 @@ TEST_CASE("fails an assertion" * geolab::points(1) * geolab::hint("look at the s
     int sum = 1 + 1;
     INFO("input: 1 + 1");
     CHECK(sum == 3);
+}
+TEST_CASE("expects an exception that never comes" * geolab::points(1)) {
+    CHECK_THROWS_AS([] { return 1; }(), std::invalid_argument);
 }
 TEST_CASE("not implemented" * geolab::points(1)) { CHECK(([]() -> int { throw geolab::NotImplemented("answer"); })() == 42); }
 TEST_CASE("segfaults" * geolab::points(1)) {

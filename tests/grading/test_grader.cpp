@@ -43,7 +43,7 @@ const geolab::grading::TestResult& result(const std::string& name) {
 TEST_CASE("the grader lists every fixture with its metadata") {
     const auto& rep = fixture_report();
     REQUIRE(rep.error == "");
-    CHECK(rep.results.size() == 16);
+    CHECK(rep.results.size() == 17);
     CHECK(result("hidden and passes").info.hidden);
     CHECK(result("hidden and passes").info.points == 2);
     CHECK(result("fails an assertion").info.hint == "look at the sum");
@@ -55,6 +55,7 @@ TEST_CASE("each misbehaviour is isolated and classified") {
     const std::map<std::string, Status> expected = {
         {"passes", Status::passed},
         {"fails an assertion", Status::failed},
+        {"expects an exception that never comes", Status::failed},
         {"not implemented", Status::not_implemented},
         {"segfaults", Status::crashed},
         {"aborts", Status::crashed},
@@ -78,12 +79,14 @@ TEST_CASE("each misbehaviour is isolated and classified") {
         CHECK(r.score == (status == Status::passed ? r.info.points : 0.0));
     }
     CHECK(fixture_report().score() == 4);
-    CHECK(fixture_report().max_score() == 15);
+    CHECK(fixture_report().max_score() == 16);
 }
 
 TEST_CASE("messages say what happened") {
     CHECK(result("segfaults").messages.at(0).find("SIGSEGV") != std::string::npos);
-    CHECK(result("fails an assertion").messages.at(0).find("sum == 3") != std::string::npos);
+    CHECK(result("fails an assertion").messages.at(0).find("CHECK( sum == 3 ) is false: 2 == 3") != std::string::npos);
+    CHECK(result("expects an exception that never comes").messages.at(0).find("did not throw") != std::string::npos);
+    CHECK(result("throws an unexpected exception").messages.at(0).find("boom") != std::string::npos);
     CHECK(result("fails an assertion").messages.at(0).find("input: 1 + 1") != std::string::npos);
     CHECK(result("not implemented").messages.at(0).find("not implemented: answer") != std::string::npos);
     CHECK(result("exits early with status 0").messages.at(0).find("exit") != std::string::npos);
@@ -99,8 +102,8 @@ TEST_CASE("reports: results.json and JUnit are written and well-formed") {
     std::ifstream f(json_path);
     auto j = nlohmann::json::parse(f);
     CHECK(j["score"] == 4);
-    CHECK(j["max_score"] == 15);
-    REQUIRE(j["tests"].size() == 16);
+    CHECK(j["max_score"] == 16);
+    REQUIRE(j["tests"].size() == 17);
     for (const auto& t : j["tests"]) {
         CHECK(t.contains("name"));
         CHECK(t.contains("number"));
@@ -112,7 +115,7 @@ TEST_CASE("reports: results.json and JUnit are written and well-formed") {
     std::ifstream x(junit_path);
     std::string xml((std::istreambuf_iterator<char>(x)), {});
     CHECK(xml.find("<testsuites>") != std::string::npos);
-    CHECK(xml.find("tests=\"16\"") != std::string::npos);
+    CHECK(xml.find("tests=\"17\"") != std::string::npos);
 }
 
 TEST_CASE("a test can attach a picture, which the grader collects") {

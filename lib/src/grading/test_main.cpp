@@ -122,12 +122,17 @@ struct VerdictListener : doctest::IReporter {
         std::ostringstream os;
         os << short_path(a.m_file) << ":" << a.m_line << ": " << doctest::assertString(a.m_at) << "( " << a.m_expr
            << " )";
-        if (a.m_threw)
+        // by the kind of assertion (m_exception_type is "" for plain CHECKs, not null: it tells nothing)
+        namespace at = doctest::assertType;
+        if (a.m_at & (at::is_throws | at::is_throws_as | at::is_throws_with))
+            os << (a.m_threw ? std::string(" threw a different exception: ") + a.m_exception.c_str()
+                             : std::string(" did not throw"));
+        else if (a.m_threw)
             os << " threw: " << a.m_exception.c_str();
-        else if (a.m_exception_type)
-            os << " did not throw as expected" << (a.m_threw_as ? "" : " (wrong or no exception)");
         else if (a.m_decomp.size())
             os << " is false: " << a.m_decomp.c_str();
+        else
+            os << " is false";
         os << "\n" << contexts();
         note(os.str());
     }
