@@ -205,6 +205,7 @@ public:
         return a_->bounds();
     }
     double lipschitz() const override { return combined_lipschitz(a_->lipschitz(), b_->lipschitz()); }
+    bool sign_may_jump() const override { return a_->sign_may_jump() || b_->sign_may_jump(); }
 
     static double combined_lipschitz(double la, double lb) { return (la == 0.0 || lb == 0.0) ? 0.0 : std::max(la, lb); }
 
@@ -231,6 +232,7 @@ public:
         return {u.lo - 0.25 * k_, u.hi + 0.25 * k_};  // smin ≥ min − k/4
     }
     double lipschitz() const override { return Binary::combined_lipschitz(a_->lipschitz(), b_->lipschitz()); }
+    bool sign_may_jump() const override { return a_->sign_may_jump() || b_->sign_may_jump(); }
 
 private:
     double blend(double a, double b) const { return std::clamp(0.5 + 0.5 * (b - a) / k_, 0.0, 1.0); }
@@ -248,6 +250,7 @@ public:
         return {b.lo + t_, b.hi + t_};
     }
     double lipschitz() const override { return f_->lipschitz(); }
+    bool sign_may_jump() const override { return f_->sign_may_jump(); }
 
 private:
     FieldPtr f_;
@@ -264,6 +267,7 @@ public:
         return {b.lo * s_, b.hi * s_};
     }
     double lipschitz() const override { return f_->lipschitz(); }
+    bool sign_may_jump() const override { return f_->sign_may_jump(); }
 
 private:
     FieldPtr f_;

@@ -7,6 +7,8 @@
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <tuple>
+#include <utility>
 
 namespace geolab {
 namespace {
@@ -74,6 +76,47 @@ double triangle_solid_angle(const glm::dvec3& p, const glm::dvec3& a, const glm:
     return 2.0 * std::atan2(det, denom);
 }
 
+namespace {
+
+// Does the soup's oriented boundary chain not vanish? Vertices are identified by their exact position (soups read
+// from STL repeat them per face); every polygon edge a→b counts +1 on the undirected edge, b→a counts −1. A closed,
+// consistently oriented surface cancels every edge (inward-oriented ones too); a hole or a misoriented pair does not,
+// and then the winding number is fractional near that edge.
+bool has_open_boundary(const PolygonSoup& soup) {
+    std::vector<std::uint32_t> by_position(soup.positions.size()), id(soup.positions.size());
+    for (std::uint32_t i = 0; i < by_position.size(); ++i) by_position[i] = i;
+    auto less = [&](std::uint32_t a, std::uint32_t b) {
+        const glm::dvec3 &p = soup.positions[a], &q = soup.positions[b];
+        return std::tie(p.x, p.y, p.z) < std::tie(q.x, q.y, q.z);
+    };
+    std::sort(by_position.begin(), by_position.end(), less);
+    for (std::size_t k = 0; k < by_position.size(); ++k)
+        id[by_position[k]] = (k > 0 && !less(by_position[k - 1], by_position[k])) ? id[by_position[k - 1]]
+                                                                                 : std::uint32_t(k);
+    std::vector<std::pair<std::uint64_t, int>> edges;  // (undirected key, ±1)
+    edges.reserve(soup.indices.size());
+    for (std::size_t f = 0; f + 1 < soup.offsets.size(); ++f) {
+        auto vs = soup.face(f);
+        if (vs.size() < 3) continue;
+        for (std::size_t i = 0; i < vs.size(); ++i) {
+            const std::uint32_t a = id[vs[i]], b = id[vs[(i + 1) % vs.size()]];
+            if (a == b) continue;
+            edges.push_back({(std::uint64_t(std::min(a, b)) << 32) | std::max(a, b), a < b ? 1 : -1});
+        }
+    }
+    std::sort(edges.begin(), edges.end());
+    for (std::size_t i = 0; i < edges.size();) {
+        int net = 0;
+        std::size_t j = i;
+        for (; j < edges.size() && edges[j].first == edges[i].first; ++j) net += edges[j].second;
+        if (net != 0) return true;
+        i = j;
+    }
+    return false;
+}
+
+}  // namespace
+
 MeshField::MeshField(const PolygonSoup& soup) {
     // fan-triangulate, checking the indices and the positions used
     for (std::size_t f = 0; f + 1 < soup.offsets.size(); ++f) {
@@ -90,6 +133,7 @@ MeshField::MeshField(const PolygonSoup& soup) {
             tris_.push_back({soup.positions[vs[0]], soup.positions[vs[i]], soup.positions[vs[i + 1]]});
     }
     if (tris_.empty()) throw std::invalid_argument("MeshField: the soup has no triangle");
+    open_ = has_open_boundary(soup);
     if (tris_.size() >= std::numeric_limits<std::uint32_t>::max() / 2)
         throw std::invalid_argument("MeshField: too many triangles");
 

@@ -20,6 +20,7 @@
 #include "geolab/dual_contouring.hpp"
 #include "geolab/errors.hpp"
 #include "geolab/field.hpp"
+#include "geolab/fixtures.hpp"
 #include "geolab/grading/test.hpp"
 #include "geolab/implicits.hpp"
 #include "geolab/io.hpp"
@@ -495,6 +496,79 @@ inline int sign_changing_edges(const Octree& t, const OctreeNode& nd) {
         for (int c = 0; c < 8; ++c)
             if (!(c & (1 << a)) && (t.value(t.corner(nd, c)) <= 0.0) != (t.value(t.corner(nd, c | (1 << a))) <= 0.0)) ++n;
     return n;
+}
+
+// An icosphere of radius 0.8 (3 subdivisions, 1280 faces) without the faces whose centroid has z > 0.5: a hole of
+// radius about 0.6 around +Z. MeshField's winding-number sign spans the hole with a cap on which the field jumps
+// from +d to −d, d up to about 0.3 (the distance to the hole's rim): a distance test alone sees no surface there.
+inline PolygonSoup sphere_with_hole() {
+    const PolygonSoup ico = geolab::fixtures::icosphere(3);
+    PolygonSoup out;
+    for (const auto& p : ico.positions) out.positions.push_back(0.8 * p);
+    for (std::size_t f = 0; f < ico.n_faces(); ++f) {
+        auto vs = ico.face(f);
+        glm::dvec3 c(0.0);
+        for (std::uint32_t v : vs) c += out.positions[v];
+        if (c.z / double(vs.size()) > 0.5) continue;
+        out.add_face(vs);
+    }
+    return out;
+}
+
+// What dual contouring needs of a tree whatever the field: no leaf above max_level has corners on both sides, and
+// every leaf around a sign-changing edge of a finest leaf (the 4 sharing it; the ring of leaves around a radial
+// edge on the polar axis) is a finest leaf. Checked through the given locate() and the cached samples.
+struct ClosureReport {
+    std::size_t coarse_with_sign_change = 0, coarse_around_edge = 0;
+    std::string first;
+};
+inline ClosureReport closure_report(const Octree& t) {
+    ClosureReport r;
+    const std::int32_t n = t.resolution();
+    auto note = [&](std::uint32_t l, const std::string& why) {
+        if (!r.first.empty()) return;
+        const OctreeNode& nd = t.nodes[l];
+        std::ostringstream os;
+        os << "leaf " << l << " (level " << int(nd.level) << ", cell " << nd.x << ", " << nd.y << ", " << nd.z
+           << ") " << why;
+        r.first = os.str();
+    };
+    auto check_at = [&](glm::ivec3 p2, const glm::ivec3& q0, int a) {
+        const std::uint32_t l = t.locate(p2);
+        if (l == invalid_index || t.nodes[l].level == t.max_level) return;
+        ++r.coarse_around_edge;
+        note(l, "is coarser than max_level but touches the sign-changing finest edge from lattice point (" +
+                    std::to_string(q0.x) + ", " + std::to_string(q0.y) + ", " + std::to_string(q0.z) +
+                    ") along axis " + std::to_string(a));
+    };
+    for (std::uint32_t li : tree_shape(t).leaves) {
+        const OctreeNode& nd = t.nodes[li];
+        const int n_in = inside_corners(t, nd);
+        if (nd.level < t.max_level) {
+            if (n_in != 0 && n_in != 8) ++r.coarse_with_sign_change, note(li, "is coarser than max_level but its "
+                                                                              "corners are on both sides");
+            continue;
+        }
+        for (int a = 0; a < 3; ++a)
+            for (int c = 0; c < 8; ++c) {
+                if (c & (1 << a)) continue;
+                const glm::ivec3 q0 = t.corner(nd, c), q1 = t.corner(nd, c | (1 << a));
+                if ((t.value(q0) <= 0.0) == (t.value(q1) <= 0.0)) continue;
+                if (t.coordinates == Coordinates::spherical && a == 0 && (q0.y == 0 || q0.y == n)) {
+                    for (std::int32_t k = 0; k < n; ++k) check_at({2 * q0.x + 1, q0.y == 0 ? 1 : 2 * n - 1, 2 * k + 1}, q0, a);
+                    continue;
+                }
+                const int b = (a + 1) % 3, d = (a + 2) % 3;
+                for (int k = 0; k < 4; ++k) {
+                    glm::ivec3 p2 = 2 * q0;
+                    p2[a] += 1;
+                    p2[b] += (k & 1) ? 1 : -1;
+                    p2[d] += (k & 2) ? 1 : -1;
+                    check_at(p2, q0, a);
+                }
+            }
+    }
+    return r;
 }
 
 // The Cartesian box of a leaf.

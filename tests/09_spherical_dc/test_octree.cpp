@@ -104,6 +104,36 @@ TEST_CASE("build_octree: a thin torus (tube thinner than the coarse cells) is re
     }
 }
 
+TEST_CASE("build_octree: a mesh with a hole (its sign jumps across the hole): every leaf at a sign change is finest" *
+          geolab::points(2) *
+          geolab::hint("The distance test is a guarantee only where f is continuous. MeshField's sign flips on a cap "
+                       "across a hole, far from the mesh, where |f| is large: finish the tree with the given "
+                       "tree.refine_around_sign_changes(). Handout §2, 'Where the test is no guarantee'.")) {
+    const PolygonSoup open_sphere = sphere_with_hole();
+    REQUIRE(boundary_loops(open_sphere) == 1);
+    const geolab::MeshField f(open_sphere);
+    REQUIRE(f.sign_may_jump());
+    for (int level : {5, 6}) {
+        Octree t = build_octree(f, params(level));
+        REQUIRE(t.nodes.size() > 1);
+        const ClosureReport r = closure_report(t);
+        INFO("icosphere r = 0.8 with a hole of radius 0.6 around +Z, level " << level);
+        CHECK_MESSAGE(r.coarse_with_sign_change + r.coarse_around_edge == 0,
+                      r.coarse_with_sign_change << " coarse leaves with corners on both sides, "
+                                                << r.coarse_around_edge << " coarse leaves around sign-changing "
+                                                << "finest edges; first: " << r.first);
+        // what goes wrong otherwise: contour finds a leaf without a vertex around a sign-changing edge
+        place_vertices(t, {});
+        PolygonSoup s;
+        CHECK_NOTHROW(s = contour(t));
+        const EdgeReport er = edge_report(s);
+        INFO("contour: " << describe(er));
+        CHECK(er.faces > 0);
+        CHECK_MESSAGE(er.boundary == 0, "the cap across the hole must close the mesh: " << er.boundary
+                                                                                     << " boundary edges");
+    }
+}
+
 TEST_CASE("build_octree: max_level outside 1..10 throws std::invalid_argument" * geolab::points(1) *
           geolab::hint("Check the level first (Octree::init_cartesian does it too). Handout §4.1.")) {
     const FieldPtr f = geolab::sphere({0, 0, 0}, 0.5);

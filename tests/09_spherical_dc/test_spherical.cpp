@@ -111,6 +111,39 @@ TEST_CASE("build_spherical_octree: every finest cell the surface passes through 
     }
 }
 
+TEST_CASE("build_spherical_octree: a hole over the north pole (the sign jumps there): rings of finest leaves" *
+          geolab::points(2) *
+          geolab::hint("Where the field's sign jumps (MeshField of a mesh with holes), the ball test alone can leave "
+                       "coarse leaves at a sign change, even in the ring around the polar axis: finish with the "
+                       "given tree.refine_around_sign_changes(). Handout §2 and §4.")) {
+    const PolygonSoup open_sphere = sphere_with_hole();
+    const geolab::MeshField f(open_sphere);
+    REQUIRE(f.sign_may_jump());
+    const glm::dvec3 origin(0.01, -0.02, 0.0);
+    for (int L : {5, 6}) {
+        const Octree t = build_spherical_octree(f, L, origin, 0.0, 1.0);
+        REQUIRE(t.nodes.size() > 1);
+        const ClosureReport r = closure_report(t);
+        INFO("icosphere r = 0.8 with a hole of radius 0.6 around +Z, origin " << str(origin) << ", level " << L);
+        CHECK_MESSAGE(r.coarse_with_sign_change + r.coarse_around_edge == 0,
+                      r.coarse_with_sign_change << " coarse leaves with corners on both sides, "
+                                                << r.coarse_around_edge << " coarse leaves around sign-changing "
+                                                << "finest edges; first: " << r.first);
+        // the whole pipeline: the cap closes the hole, both poles are filled
+        SphericalParams p;
+        p.max_level = L;
+        p.origin = origin;
+        DcStats stats;
+        PolygonSoup s;
+        CHECK_NOTHROW(s = dual_contour_spherical(f, p, &stats));
+        const EdgeReport er = edge_report(s);
+        INFO("dual_contour_spherical: " << describe(er) << ", pole rings " << stats.pole_rings);
+        CHECK(er.faces > 0);
+        CHECK_MESSAGE(er.boundary == 0, er.boundary << " boundary edges (a hole left open, or a pole ring missed)");
+        CHECK(stats.pole_rings == 2);
+    }
+}
+
 TEST_CASE("place_vertices (spherical): each vertex lies in its cell in (r theta phi); phi relative to the cell" *
           geolab::points(2) *
           geolab::hint("Clamp r, theta and phi of the QEF solution to the cell's intervals. phi must be measured "

@@ -83,6 +83,18 @@ geolab::PolygonSoup without_face(const geolab::PolygonSoup& soup, std::size_t sk
     return out;
 }
 
+// Every face reversed (an inward-oriented closed mesh, like CGAL's head).
+geolab::PolygonSoup flipped_all(const geolab::PolygonSoup& soup) {
+    geolab::PolygonSoup out;
+    out.positions = soup.positions;
+    for (std::size_t f = 0; f < soup.n_faces(); ++f) {
+        auto vs = soup.face(f);
+        std::vector<std::uint32_t> r(vs.rbegin(), vs.rend());
+        out.add_face(r);
+    }
+    return out;
+}
+
 double brute_force_distance(const geolab::PolygonSoup& soup, const dvec3& p) {
     double best = std::numeric_limits<double>::infinity();
     for (std::size_t f = 0; f < soup.n_faces(); ++f) {
@@ -492,6 +504,35 @@ TEST_SUITE("fields") {
         CHECK(checked > 500);
         // the winding number of an open sphere is fractional only near the hole
         CHECK(std::abs(f.winding_number({0, 0, 0}) - 1.0) < 0.1);
+    }
+
+    TEST_CASE("MeshField: sign_may_jump tells open or misoriented meshes from closed ones; CSG passes it on") {
+        const auto closed = geolab::fixtures::icosphere(2);
+        CHECK_FALSE(geolab::MeshField(closed).sign_may_jump());
+        CHECK_FALSE(geolab::MeshField(geolab::fixtures::cube(false)).sign_may_jump());   // quads
+        CHECK_FALSE(geolab::MeshField(geolab::fixtures::torus()).sign_may_jump());
+        CHECK_FALSE(geolab::MeshField(geolab::fixtures::two_components()).sign_may_jump());
+        CHECK(geolab::MeshField(without_face(closed, 5)).sign_may_jump());                // a hole
+        CHECK(geolab::MeshField(geolab::fixtures::grid(3, 3)).sign_may_jump());           // a sheet
+        CHECK(geolab::MeshField(geolab::fixtures::flip_face(closed, 7)).sign_may_jump()); // misoriented face
+        // inward-oriented: the boundary still cancels
+        CHECK_FALSE(geolab::MeshField(flipped_all(closed)).sign_may_jump());
+        // unwelded (every face has its own copies of its vertices, as read from STL): matched by position
+        geolab::PolygonSoup unwelded;
+        for (std::size_t f = 0; f < closed.n_faces(); ++f) {
+            const auto vs = closed.face(f);
+            const auto first = static_cast<std::uint32_t>(unwelded.positions.size());
+            for (std::uint32_t v : vs) unwelded.positions.push_back(closed.positions[v]);
+            unwelded.add_face({first, first + 1, first + 2});
+        }
+        CHECK_FALSE(geolab::MeshField(unwelded).sign_may_jump());
+        // fields built from others keep the flag; analytic ones have none
+        const FieldPtr open = std::make_shared<geolab::MeshField>(without_face(closed, 5));
+        const FieldPtr ball = geolab::sphere(dvec3(0.0), 0.5);
+        CHECK_FALSE(ball->sign_may_jump());
+        CHECK(geolab::csg_union(ball, open)->sign_may_jump());
+        CHECK(geolab::translated(open, dvec3(1, 0, 0))->sign_may_jump());
+        CHECK_FALSE(geolab::scaled(ball, 2.0)->sign_may_jump());
     }
 
     TEST_CASE("MeshField: BVH distance equals brute force") {

@@ -168,6 +168,58 @@ std::uint32_t Octree::split(std::uint32_t n) {
     return first;
 }
 
+std::size_t Octree::refine_around_sign_changes() {
+    if (nodes.empty() || !field || (field->lipschitz() > 0.0 && !field->sign_may_jump())) return 0;
+    const std::int32_t n_res = resolution();
+    const bool spherical = coordinates == Coordinates::spherical;
+    std::size_t splits = 0;
+    std::vector<std::uint32_t> work = leaves();  // leaves still to check; split() adds their children
+    // split the leaf holding the (doubled) point p2 until a finest leaf holds it
+    auto refine_at = [&](glm::ivec3 p2) {
+        for (std::uint32_t l = locate(p2); l != invalid_index && nodes[l].level < max_level; l = locate(p2)) {
+            const std::uint32_t first = split(l);
+            ++splits;
+            for (int c = 0; c < 8; ++c) work.push_back(first + c);
+        }
+    };
+    while (!work.empty()) {
+        const OctreeNode nd = nodes[work.back()];  // a copy: split() may move the nodes
+        const std::uint32_t n = work.back();
+        work.pop_back();
+        if (!nd.is_leaf()) continue;
+        glm::ivec3 q[8];
+        double v[8];
+        int n_in = 0;
+        for (int c = 0; c < 8; ++c) q[c] = corner(nd, c), v[c] = value(q[c]), n_in += inside(v[c]);
+        if (n_in == 0 || n_in == 8) continue;
+        if (nd.level < max_level) {  // (a)
+            const std::uint32_t first = split(n);
+            ++splits;
+            for (int c = 0; c < 8; ++c) work.push_back(first + c);
+            continue;
+        }
+        for (int a = 0; a < 3; ++a)  // (b): the edges c → c + e_a that change sign
+            for (int c = 0; c < 8; ++c) {
+                if ((c & (1 << a)) || inside(v[c]) == inside(v[c | (1 << a)])) continue;
+                if (spherical && a == 0 && (q[c].y == 0 || q[c].y == n_res)) {  // on the polar axis: the ring
+                    for (std::int32_t k = 0; k < n_res; ++k)
+                        refine_at({2 * q[c].x + 1, q[c].y == 0 ? 1 : 2 * n_res - 1, 2 * k + 1});
+                    continue;
+                }
+                const int b = (a + 1) % 3, d = (a + 2) % 3;
+                glm::ivec3 m2 = 2 * q[c];
+                m2[a] += 1;
+                for (int k = 0; k < 4; ++k) {
+                    glm::ivec3 p2 = m2;
+                    p2[b] += (k & 1) ? 1 : -1;
+                    p2[d] += (k & 2) ? 1 : -1;
+                    refine_at(p2);
+                }
+            }
+    }
+    return splits;
+}
+
 std::pair<glm::dvec3, double> cartesian_domain(const ScalarField& f, double padding) {
     Box b = f.bounds();
     glm::dvec3 ext = b.hi - b.lo;

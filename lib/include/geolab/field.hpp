@@ -30,6 +30,10 @@ public:
     //! A Lipschitz constant L with |f(p) − f(q)| ≤ L |p − q| (1 for exact signed distances), used by
     //! conservative octree refinement. Return 0 if unknown.
     virtual double lipschitz() const { return 0.0; }
+    //! True when the sign of f may jump where |f| > 0 (the winding-number sign of a mesh with holes flips on a
+    //! surface spanning each hole). Then lipschitz() bounds the change of |f| only, and a test on |f| alone cannot
+    //! promise that a cell holds no sign change.
+    virtual bool sign_may_jump() const { return false; }
 };
 
 using FieldPtr = std::shared_ptr<const ScalarField>;

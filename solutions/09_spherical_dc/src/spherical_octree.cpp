@@ -52,6 +52,7 @@ Octree build_spherical_octree(const ScalarField& f, int max_level, const glm::dv
         for (double r : {r_lo, r_hi}) radius = std::max(radius, std::sqrt(std::max(0.0, r * r + rc * rc - 2.0 * r * rc * cos_max)));
         if (std::abs(tree.value(mid)) <= lf * radius * (1.0 + 1e-12)) tree.split(n);
     }
+    tree.refine_around_sign_changes();  // a guarantee where the test alone is none (estimated Lf, sign jumps)
     return tree;
     // END SOLUTION
 }

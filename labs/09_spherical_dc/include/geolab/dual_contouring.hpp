@@ -310,6 +310,16 @@ public:
     //! Append 8 children to node n (a leaf), in the order of the child index c. Returns the first child index.
     std::uint32_t split(std::uint32_t n);
 
+    //! Finish a tree whose refinement test is no guarantee: split leaves coarser than L until
+    //!  (a) every leaf whose corners are not all on one side is a finest leaf, and
+    //!  (b) every leaf around a sign-changing edge of a finest leaf is a finest leaf (the 4 leaves sharing the
+    //!      edge; for a radial edge on the polar axis, the whole ring of leaves around it),
+    //! so that contour() finds a vertex in every leaf around every sign-changing minimal edge. The conservative
+    //! test already guarantees both when the field is Lipschitz with a known constant; then (lipschitz() > 0 and
+    //! !sign_may_jump()) this returns 0 at once. It matters for an estimated constant and for fields whose sign
+    //! jumps (MeshField of a mesh with holes). Samples the corners of every leaf. \return the number of splits.
+    std::size_t refine_around_sign_changes();
+
 private:
     mutable BlockGrid<double> cache_{std::numeric_limits<double>::quiet_NaN()};
     mutable std::size_t samples_ = 0;
@@ -342,7 +352,9 @@ std::pair<glm::dvec3, double> cartesian_domain(const ScalarField& f, double padd
 //!   |f(center)| ≤ Lf · (half diagonal of the cell),   Lf = f.lipschitz(),
 //! (the centre is a lattice point, sample it with Octree::value). When lipschitz() == 0, Lf is estimated once as
 //! 2 × the largest |∇f| at the 9³ lattice of the domain (a heuristic, not a guarantee — documented in the handout).
-//! Leaves at level L are not tested (their corners decide). \throw std::invalid_argument for a bad level/bounds.
+//! Leaves at level L are not tested (their corners decide). Finish with tree.refine_around_sign_changes() (given):
+//! the test is no guarantee for an estimated Lf or a field whose sign jumps (handout §2).
+//! \throw std::invalid_argument for a bad level/bounds.
 Octree build_octree(const ScalarField& f, const CartesianParams& params);
 
 // =====================================================================================================================
@@ -456,7 +468,8 @@ struct SphericalParams {
 //!   |f(c)| ≤ Lf · R,   c = the point at the cell's parameter midpoint,
 //! R = max over r ∈ {r_lo, r_hi} of √(r² + r_c² − 2 r r_c cos γ), γ = the largest angle between the direction of c
 //! and the directions of the cell's 4 angular corners — a radius of a ball around c that contains the curved cell
-//! (for levels ≥ 1 the largest angle is at a corner). Lf as in build_octree.
+//! (for levels ≥ 1 the largest angle is at a corner). Lf as in build_octree; finish with
+//! tree.refine_around_sign_changes() as there.
 //! \throw std::invalid_argument for a bad level, r_min < 0 or r_min ≥ r_max.
 Octree build_spherical_octree(const ScalarField& f, int max_level, const glm::dvec3& origin, double r_min,
                               double r_max);
