@@ -489,6 +489,26 @@ inline std::size_t sign_changing_finest_edges(const Octree& t) {
     return std::size_t(std::unique(keys.begin(), keys.end()) - keys.begin());
 }
 
+// The sign configuration a leaf must carry: bit c set when corner c is inside (f <= 0).
+inline int expected_signs(const Octree& t, const OctreeNode& nd) {
+    int m = 0;
+    for (int c = 0; c < 8; ++c) m |= int(t.value(t.corner(nd, c)) <= 0.0) << c;
+    return m;
+}
+
+// Leaves whose OctreeNode::signs disagree with their corner samples; the first few described in `first`.
+inline std::size_t wrong_signs(const Octree& t, std::ostringstream& first) {
+    std::size_t wrong = 0;
+    for (std::uint32_t li : tree_shape(t).leaves) {
+        const OctreeNode& nd = t.nodes[li];
+        const int want = expected_signs(t, nd);
+        if (nd.signs != want && wrong++ < 3)
+            first << "\n  leaf (" << nd.x << ", " << nd.y << ", " << nd.z << ") level " << int(nd.level)
+                  << ": signs " << int(nd.signs) << ", its corners give " << want;
+    }
+    return wrong;
+}
+
 // Sign-changing edges of one leaf (12 edges, by the lab's tie rule).
 inline int sign_changing_edges(const Octree& t, const OctreeNode& nd) {
     int n = 0;

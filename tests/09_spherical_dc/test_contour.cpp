@@ -24,8 +24,8 @@ TEST_CASE("place_vertices: a vertex in exactly the leaves whose corners change s
           geolab::points(2) *
           geolab::hint("A leaf gets a vertex iff its 8 corner samples are not all on one side, where inside means "
                        "f <= 0 (a sample that is exactly 0 is inside: the lattice box here has zeros on its faces). "
-                       "One QEF plane per sign-changing edge; each finest edge's crossing computed once. "
-                       "Handout §5.1.")) {
+                       "One QEF plane per sign-changing edge; each finest edge's crossing computed once. Record "
+                       "every leaf's corner signs in OctreeNode::signs. Handout §5.1.")) {
     const LatticeBox lbox(4, 0.05, {3, 4, 5}, {12, 11, 10});
     const FieldPtr ball = geolab::sphere({0.05, 0.1, -0.07}, 0.66);
     const std::pair<const ScalarField*, const char*> fields[] = {{&lbox, "box with faces on lattice planes, level 4"},
@@ -61,6 +61,11 @@ TEST_CASE("place_vertices: a vertex in exactly the leaves whose corners change s
                       << (has ? ", qef.count " + std::to_string(t.vertices[nd.vertex].qef.count) : std::string());
         }
         CHECK_MESSAGE(wrong == 0, wrong << " leaves have a wrong vertex / QEF" << first.str());
+        std::ostringstream first_signs;
+        const std::size_t bad_signs = wrong_signs(t, first_signs);
+        CHECK_MESSAGE(bad_signs == 0, bad_signs << " leaves have OctreeNode::signs that do not match their corners "
+                                                   "(bit c = corner c inside; every leaf, with a vertex or not)"
+                                                << first_signs.str());
         CHECK(with_vertex > 0);
         CHECK(t.vertices.size() == with_vertex);
         CHECK_MESSAGE(crossings == sign_changing_finest_edges(t),
@@ -143,6 +148,10 @@ TEST_CASE("simplify: a box collapses to its 8 corner vertices" * geolab::points(
     CHECK(collapses > 0);
     CHECK(after == 8);
     CHECK(tree_shape(t).bad_children == 0);
+    std::ostringstream first_signs;
+    const std::size_t bad_signs = wrong_signs(t, first_signs);
+    CHECK_MESSAGE(bad_signs == 0, bad_signs << " leaves (collapsed parents among them) have OctreeNode::signs that "
+                                               "do not match their corners" << first_signs.str());
     for (std::uint32_t li : tree_shape(t).leaves) {
         const OctreeNode& nd = t.nodes[li];
         if (nd.vertex == invalid_index) continue;

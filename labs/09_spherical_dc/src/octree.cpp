@@ -32,7 +32,7 @@ void Octree::init_cartesian(const ScalarField& f, int level, const glm::dvec3& l
     field = &f;
     nodes.assign(1, OctreeNode{});
     vertices.clear();
-    cache_.clear();
+    cache_ = BlockGrid<double>(std::numeric_limits<double>::quiet_NaN(), resolution() + 1);
     samples_ = 0;
 }
 
@@ -50,7 +50,7 @@ void Octree::init_spherical(const ScalarField& f, int level, const glm::dvec3& o
     field = &f;
     nodes.assign(1, OctreeNode{});
     vertices.clear();
-    cache_.clear();
+    cache_ = BlockGrid<double>(std::numeric_limits<double>::quiet_NaN(), resolution() + 1);
     samples_ = 0;
     const int n = resolution();
     sin_t_.resize(n + 1);

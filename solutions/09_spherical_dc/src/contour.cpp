@@ -20,7 +20,7 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params) {
     std::size_t crossings = 0;
     const std::vector<std::uint32_t> leaves = tree.leaves();
     // finest edges are shared by 4 leaves: compute each crossing once, keyed by the edge's doubled midpoint
-    BlockGrid<std::uint32_t> edge_crossing(invalid_index);
+    BlockGrid<std::uint32_t> edge_crossing(invalid_index, 2 * n_res + 1);
     std::vector<Crossing> computed;
     // Speed: in the conservative band about half the leaves are cut by the surface, each with about one new crossing;
     // reserving that much avoids most copies of these large arrays while they grow.
@@ -30,9 +30,9 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params) {
     auto place = [&](std::uint32_t li, const glm::ivec3 (&q)[8], const double (&v)[8]) {
         OctreeNode& nd = tree.nodes[li];
         nd.vertex = invalid_index;
-        int n_in = 0;
-        for (int c = 0; c < 8; ++c) n_in += inside(v[c]);
-        if (n_in == 0 || n_in == 8) return;
+        nd.signs = 0;
+        for (int c = 0; c < 8; ++c) nd.signs |= std::uint8_t(inside(v[c]) << c);
+        if (nd.signs == 0 || nd.signs == 0xff) return;
         // Hermite data on the 12 edges: corner c → c | (1 << a) for the corners c with bit a clear
         Qef qef;
         for (int a = 0; a < 3; ++a)
@@ -146,11 +146,15 @@ std::size_t simplify(Octree& tree, double tolerance, double tau) {
         for (int c = 0; c < 8 && all_leaves; ++c) all_leaves = tree.nodes[nd.first_child + c].is_leaf();
         if (!all_leaves) continue;
         // (1) the parent's corner signs form one sheet
-        const std::int32_t s = tree.cell_span(nd.level), h = s / 2;
+        const std::int32_t s = tree.cell_span(nd.level);
         const glm::ivec3 base = tree.corner(nd, 0);
-        bool sub_in[27];  // inside at the sub-lattice points base + (i, j, k) h, (i, j, k) ∈ {0,1,2}³
-        for (int i = 0; i < 27; ++i) sub_in[i] = inside(tree.value(base + glm::ivec3(i % 3, (i / 3) % 3, i / 9) * h));
-        auto sign_at = [&](int i, int j, int k) { return sub_in[i + 3 * j + 9 * k]; };
+        // inside at the sub-lattice point base + (i, j, k) h, (i, j, k) ∈ {0,1,2}³: a corner of the child
+        // (min(i,1), min(j,1), min(k,1)), whose sign configuration place_vertices recorded
+        auto sign_at = [&](int i, int j, int k) {
+            const int ci = std::min(i, 1), cj = std::min(j, 1), ck = std::min(k, 1);
+            const OctreeNode& child = tree.nodes[nd.first_child + ci + 2 * cj + 4 * ck];
+            return child.corner_inside((i - ci) + 2 * (j - cj) + 4 * (k - ck));
+        };
         int in_mask = 0;
         for (int c = 0; c < 8; ++c)
             if (sign_at(2 * (c & 1), (c & 2), (c & 4) / 2)) in_mask |= 1 << c;
@@ -191,6 +195,7 @@ std::size_t simplify(Octree& tree, double tolerance, double tau) {
         }
         tree.nodes[ni].first_child = invalid_index;
         tree.nodes[ni].vertex = new_vertex;
+        tree.nodes[ni].signs = std::uint8_t(in_mask);
         ++collapses;
     }
     return collapses;
@@ -199,10 +204,15 @@ std::size_t simplify(Octree& tree, double tolerance, double tau) {
 
 PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles) {
     // BEGIN SOLUTION
-    // a leaf as the polygons see it: node index, dual vertex (or invalid_index) and level
+    // a leaf as the polygons see it: node index, dual vertex (or invalid_index) and level. A finest leaf found
+    // through the `finest` grid below has leaf == invalid_index when it has a vertex: the vertex identifies it.
     struct LeafRef {
         std::uint32_t leaf = invalid_index, vertex = invalid_index;
         int level = 0;
+        bool found() const { return leaf != invalid_index || vertex != invalid_index; }
+        bool same(const LeafRef& o) const {
+            return vertex == o.vertex && (vertex != invalid_index || leaf == o.leaf);
+        }
     };
     PolygonSoup soup;
     if (poles) poles->clear();
@@ -233,18 +243,20 @@ PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles) {
     static constexpr int qb[4] = {-1, +1, +1, -1}, qc[4] = {-1, -1, +1, +1};
     const std::vector<std::uint32_t> leaves = tree.leaves();
     // finest leaves by cell index: neighbours at the finest level without descending the tree. Speed: the grid
-    // also holds their vertex and level, so that the (large) node array is not read again for them.
-    BlockGrid<LeafRef> finest;
-    for (std::uint32_t li : leaves)
-        if (tree.nodes[li].level == tree.max_level)
-            finest.slot({tree.nodes[li].x, tree.nodes[li].y, tree.nodes[li].z}) = leaf_ref(li);
+    // holds their vertex (4 bytes a cell), so that the (large) node array is not read again for them.
+    constexpr std::uint32_t not_finest = invalid_index, no_vertex = invalid_index - 1;
+    BlockGrid<std::uint32_t> finest(not_finest, n_res);
+    for (std::uint32_t li : leaves) {
+        const OctreeNode& nd = tree.nodes[li];
+        if (nd.level == tree.max_level) finest.slot({nd.x, nd.y, nd.z}) = nd.vertex == invalid_index ? no_vertex : nd.vertex;
+    }
     auto find_leaf = [&](glm::ivec3 p2) {
         // p2 has odd coordinates: the finest cell containing it is p2 / 2 (φ wrapped)
         glm::ivec3 cell(p2.x >> 1, p2.y >> 1, p2.z >> 1);
         if (spherical) cell.z &= n_res - 1;
         if (cell.x >= 0 && cell.y >= 0 && cell.z >= 0 && cell.x < n_res && cell.y < n_res && cell.z < n_res) {
-            LeafRef l = finest.get(cell);
-            if (l.leaf != invalid_index) return l;
+            const std::uint32_t v = finest.get(cell);
+            if (v != not_finest && v != no_vertex) return LeafRef{invalid_index, v, tree.max_level};
         }
         std::uint32_t l = tree.locate(p2);
         return l == invalid_index ? LeafRef{} : leaf_ref(l);
@@ -253,15 +265,14 @@ PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles) {
         const OctreeNode& nd = tree.nodes[li];
         if (nd.vertex == invalid_index) continue;
         const std::int32_t span = tree.cell_span(nd.level);
-        double v[8];
         glm::ivec3 q[8];
-        for (int c = 0; c < 8; ++c) q[c] = tree.corner(nd, c), v[c] = tree.value(q[c]);
+        for (int c = 0; c < 8; ++c) q[c] = tree.corner(nd, c);
         for (int a = 0; a < 3; ++a) {
             const int b = (a + 1) % 3, cax = (a + 2) % 3;
             for (int c = 0; c < 8; ++c) {
                 if (c & (1 << a)) continue;
                 const int d = c | (1 << a);
-                if (inside(v[c]) == inside(v[d])) continue;
+                if (nd.corner_inside(c) == nd.corner_inside(d)) continue;
                 const glm::ivec3 q0 = q[c];
                 if (spherical) {
                     if (a == 0 && (q0.y == 0 || q0.y == n_res)) continue;  // on the polar axis: a pole ring
@@ -282,7 +293,7 @@ PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles) {
                     p2[b] += qb[k];
                     p2[cax] += qc[k];
                     around[k] = find_leaf(p2);
-                    if (around[k].leaf == invalid_index) emit = false;  // outside the domain
+                    if (!around[k].found()) emit = false;  // outside the domain
                     else if (around[k].level > nd.level) emit = false;  // not minimal here
                     else {
                         // emit once: from the first quadrant holding a leaf as small as this one
@@ -298,10 +309,10 @@ PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles) {
                 LeafRef poly[4];
                 int m = 0;
                 for (int k = 0; k < 4; ++k) {
-                    const LeafRef& l = inside(v[c]) ? around[k] : around[3 - k];
-                    if (m == 0 || poly[m - 1].leaf != l.leaf) poly[m++] = l;
+                    const LeafRef& l = nd.corner_inside(c) ? around[k] : around[3 - k];
+                    if (m == 0 || !poly[m - 1].same(l)) poly[m++] = l;
                 }
-                if (m > 1 && poly[m - 1].leaf == poly[0].leaf) --m;
+                if (m > 1 && poly[m - 1].same(poly[0])) --m;
                 if (m < 3) continue;
                 std::uint32_t w[4];
                 for (int k = 0; k < m; ++k) w[k] = soup_vertex(poly[k]);
@@ -325,7 +336,7 @@ PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles) {
             const bool north = pole == 0;
             if (north ? nd.y != 0 : (std::int32_t(nd.y) + 1) * span != n_res) continue;
             const int c0 = north ? 0 : 2, c1 = c0 | 1;  // lower-φ corners on the axis, inner and outer radius
-            if (inside(v[c0]) == inside(v[c1])) continue;
+            if (nd.corner_inside(c0) == nd.corner_inside(c1)) continue;
             glm::ivec3 p2(2 * q[c0].x + span, north ? 1 : 2 * n_res - 1, 0);
             std::vector<LeafRef> ring;
             bool minimal = true;
@@ -336,9 +347,9 @@ PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles) {
                 else if (ring.empty() || ring.back().leaf != l) ring.push_back(leaf_ref(l));
             }
             if (!minimal) continue;  // cannot happen without simplification: all ring leaves are finest
-            if (ring.size() > 1 && ring.back().leaf == ring.front().leaf) ring.pop_back();
+            if (ring.size() > 1 && ring.back().same(ring.front())) ring.pop_back();
             // increasing φ is counter-clockwise seen from +Z; outward is +r (±Z) when the inner end is inside
-            if (inside(v[c0]) != north) std::reverse(ring.begin(), ring.end());
+            if (nd.corner_inside(c0) != north) std::reverse(ring.begin(), ring.end());
             PoleRing pr;
             pr.north = north;
             pr.r_lo = tree.lattice_spherical(q[c0]).r;

@@ -25,11 +25,15 @@
 //!    c) has its corners at lattice coordinates (c + {0,1}) · 2^(L−l). In the spherical octree the lattice axes
 //!    are (r, θ, φ): x ↔ r, y ↔ θ, z ↔ φ, and z is taken modulo N (the φ seam).
 //!  - Output meshes are triangle soups, counter-clockwise seen from outside (outward normals).
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstdint>
 #include <limits>
+#include <new>
 #include <optional>
 #include <span>
+#include <stdexcept>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -157,7 +161,12 @@ struct OctreeNode {
     std::uint32_t first_child = invalid_index;     //!< invalid_index for a leaf
     std::uint32_t vertex = invalid_index;          //!< index into Octree::vertices (leaves with a dual vertex)
     std::uint8_t level = 0;
+    //! The sign configuration of a leaf (Ju et al. keep it per leaf): bit c set when corner c is inside, i.e.
+    //! inside(value(corner(n, c))). Written by place_vertices for every leaf and by simplify for the leaves it
+    //! makes, so that simplify and contour need not look the samples up again.
+    std::uint8_t signs = 0;
     bool is_leaf() const { return first_child == invalid_index; }
+    bool corner_inside(int c) const { return (signs >> c) & 1; }
 };
 
 //! A dual vertex: its position and the QEF it minimises (kept for simplification and for tests).
@@ -166,39 +175,79 @@ struct DualVertex {
     Qef qef;
 };
 
-//! A sparse map from lattice points to values of T, stored as dense blocks of 4×4×4 slots (initialised to `empty`)
-//! found through an open-addressing hash of the block coordinates. Octree traversals visit neighbouring lattice
-//! points together, so most look-ups stay in the last block used (far faster than hashing every point).
+//! A sparse map from lattice points to values of T, stored as dense blocks of B×B×B slots (B = 4; initialised to
+//! `empty`). Blocks are found through a directory: a dense array of block ids when the coordinates' extent is
+//! given (one array read), an open-addressing hash of the block coordinates otherwise. Octree traversals visit
+//! neighbouring lattice points together, so most look-ups stay in the last block used.
 //! Used for the field samples (T = double, empty = NaN) and free for other per-lattice-point data.
 template <class T>
 class BlockGrid {
 public:
-    explicit BlockGrid(T empty = T{}) : empty_(empty) {}
-    //! The slot of lattice point q (coordinates in [0, 2^21)); `empty` until written.
+    static constexpr int B = 4;  //!< block side (a power of 2)
+    //! \param extent if > 0, every coordinate used is in [0, extent): the directory is a dense array of
+    //! ⌈extent/B⌉³ ids (4 bytes each; then keep extent ≤ 2^12). Otherwise coordinates in [0, 2^21), hashed.
+    explicit BlockGrid(T empty = T{}, std::int32_t extent = 0) : empty_(empty) {
+        if (extent > 0) {
+            nb_ = (std::size_t(extent) + B - 1) / B;
+            dense_ = Directory(nb_ * nb_ * nb_);
+        }
+    }
+    //! The slot of lattice point q; `empty` until written.
     T& slot(glm::ivec3 q) {
-        const std::uint64_t key = (std::uint64_t(std::uint32_t(q.x) >> 2) << 42) |
-                                  (std::uint64_t(std::uint32_t(q.y) >> 2) << 21) | std::uint64_t(std::uint32_t(q.z) >> 2);
-        const std::size_t local = std::size_t(q.x & 3) | std::size_t(q.y & 3) << 2 | std::size_t(q.z & 3) << 4;
+        const std::uint64_t key = block_key(q);
         if (key != last_key_) find_block(key, true);
-        return values_[64 * std::size_t(last_id_) + local];
+        return block(last_id_)[local(q)];
     }
     //! The value at q, or `empty` (does not create blocks).
     T get(glm::ivec3 q) const {
-        const std::uint64_t key = (std::uint64_t(std::uint32_t(q.x) >> 2) << 42) |
-                                  (std::uint64_t(std::uint32_t(q.y) >> 2) << 21) | std::uint64_t(std::uint32_t(q.z) >> 2);
-        const std::size_t local = std::size_t(q.x & 3) | std::size_t(q.y & 3) << 2 | std::size_t(q.z & 3) << 4;
+        const std::uint64_t key = block_key(q);
         if (key != last_key_ && !find_block(key, false)) return empty_;
-        return values_[64 * std::size_t(last_id_) + local];
+        return block(last_id_)[local(q)];
     }
     void clear() {
         keys_.clear();
         ids_.clear();
-        values_.clear();
+        dense_ = Directory(nb_ * nb_ * nb_);
+        chunks_.clear();
         blocks_ = 0;
         last_key_ = ~std::uint64_t(0);
     }
 
 private:
+    static constexpr std::size_t block_size = std::size_t(B) * B * B;
+    static constexpr int log_b = B == 4 ? 2 : B == 8 ? 3 : 4;
+    //! A zero-filled array from calloc: its pages are mapped on first touch, so a large, sparsely used
+    //! directory costs only the pages used.
+    class Directory {
+    public:
+        Directory() = default;
+        explicit Directory(std::size_t n) : n_(n), p_(static_cast<std::uint32_t*>(std::calloc(n, sizeof(std::uint32_t)))) {
+            if (n && !p_) throw std::bad_alloc();
+        }
+        Directory(const Directory& o) : Directory(o.n_) { std::copy_n(o.p_, n_, p_); }
+        Directory(Directory&& o) noexcept : n_(std::exchange(o.n_, 0)), p_(std::exchange(o.p_, nullptr)) {}
+        Directory& operator=(Directory o) noexcept {
+            std::swap(n_, o.n_);
+            std::swap(p_, o.p_);
+            return *this;
+        }
+        ~Directory() { std::free(p_); }
+        bool empty() const { return n_ == 0; }
+        std::uint32_t& operator[](std::size_t i) const { return p_[i]; }
+
+    private:
+        std::size_t n_ = 0;
+        std::uint32_t* p_ = nullptr;
+    };
+    static constexpr std::size_t chunk_blocks = 256;  // blocks are allocated 256 at a time and never move
+    T* block(std::uint32_t id) const { return chunks_[id / chunk_blocks].data() + block_size * (id % chunk_blocks); }
+    static std::size_t local(glm::ivec3 q) {
+        return std::size_t(q.x & (B - 1)) | std::size_t(q.y & (B - 1)) << log_b | std::size_t(q.z & (B - 1)) << (2 * log_b);
+    }
+    static std::uint64_t block_key(glm::ivec3 q) {
+        return (std::uint64_t(std::uint32_t(q.x) >> log_b) << 42) | (std::uint64_t(std::uint32_t(q.y) >> log_b) << 21) |
+               std::uint64_t(std::uint32_t(q.z) >> log_b);
+    }
     static std::size_t hash(std::uint64_t k) {
         k ^= k >> 33;
         k *= 0xff51afd7ed558ccdULL;
@@ -206,19 +255,34 @@ private:
         return std::size_t(k);
     }
     bool find_block(std::uint64_t key, bool create) const {
-        if (create && 2 * (blocks_ + 1) > keys_.size()) grow();
-        if (keys_.empty()) return false;
-        const std::size_t mask = keys_.size() - 1;
-        std::size_t i = hash(key) & mask;
-        while (keys_[i] != key && keys_[i] != ~std::uint64_t(0)) i = (i + 1) & mask;
-        if (keys_[i] != key) {
+        std::uint32_t* id = nullptr;
+        if (!dense_.empty()) {
+            const std::size_t bx = key >> 42, by = (key >> 21) & 0x1fffff, bz = key & 0x1fffff;
+            if (bx >= nb_ || by >= nb_ || bz >= nb_) {
+                if (create) throw std::out_of_range("BlockGrid: lattice point outside the extent given");
+                return false;
+            }
+            id = &dense_[(bx * nb_ + by) * nb_ + bz];
+        } else {
+            if (create && 2 * (blocks_ + 1) > keys_.size()) grow();
+            if (keys_.empty()) return false;
+            const std::size_t mask = keys_.size() - 1;
+            std::size_t i = hash(key) & mask;
+            while (keys_[i] != key && keys_[i] != ~std::uint64_t(0)) i = (i + 1) & mask;
+            if (keys_[i] != key) {
+                if (!create) return false;
+                keys_[i] = key;
+            }
+            id = &ids_[i];
+        }
+        if (*id == 0) {
             if (!create) return false;
-            keys_[i] = key;
-            ids_[i] = std::uint32_t(blocks_++);
-            values_.resize(64 * blocks_, empty_);
+            if (blocks_ % chunk_blocks == 0) chunks_.emplace_back().reserve(chunk_blocks * block_size);
+            *id = std::uint32_t(++blocks_);  // ids are stored + 1: 0 means no block
+            chunks_.back().resize(chunks_.back().size() + block_size, empty_);  // within the reserve: no move
         }
         last_key_ = key;
-        last_id_ = ids_[i];
+        last_id_ = *id - 1;
         return true;
     }
     void grow() const {
@@ -236,10 +300,12 @@ private:
         }
     }
     T empty_;
+    std::size_t nb_ = 0;  // blocks per axis of the dense directory
     // mutable: get() memoises the last block
+    Directory dense_;  // block id + 1 per block position (0: none); empty when hashing
     mutable std::vector<std::uint64_t> keys_;
-    mutable std::vector<std::uint32_t> ids_;
-    mutable std::vector<T> values_;
+    mutable std::vector<std::uint32_t> ids_;  // block id + 1 per hash slot
+    mutable std::vector<std::vector<T>> chunks_;
     mutable std::size_t blocks_ = 0;
     mutable std::uint64_t last_key_ = ~std::uint64_t(0);
     mutable std::uint32_t last_id_ = 0;
@@ -374,6 +440,7 @@ struct VertexParams {
 //! relative to the cell, across the seam — to the cell's intervals). Edges that degenerate to a point (φ-edges on
 //! the polar axis, θ/φ-edges at r = 0) have no crossing; a radial edge on the axis is counted once.
 //! Finest edges are shared by 4 leaves: compute each crossing once (a BlockGrid keyed by the edge midpoint).
+//! Also record every leaf's sign configuration in OctreeNode::signs (leaves without a vertex too).
 //! Replaces tree.vertices. \return the number of crossings computed.
 std::size_t place_vertices(Octree& tree, const VertexParams& params);
 
@@ -382,7 +449,9 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params);
 //! corners edge-connected), (2) the sign at the midpoint of each of its edges agrees with one of that edge's
 //! ends, at each face centre with one of the face's corners, at its centre with one of its corners, (3) the
 //! merged QEF's unclamped solution lies in the cell and √(Q/count) ≤ tolerance (a length). The new leaf gets the
-//! merged QEF's vertex (children's vertices stay in tree.vertices, unreferenced). Repeats up the tree.
+//! merged QEF's vertex (children's vertices stay in tree.vertices, unreferenced) and its `signs`. Repeats up the
+//! tree. The signs at the 27 points of the parent's 3×3×3 sub-lattice are the children's corner signs (call
+//! place_vertices first).
 //! \return the number of collapses.
 std::size_t simplify(Octree& tree, double tolerance, double tau);
 
@@ -395,7 +464,8 @@ struct PoleRing {
     double r_lo = 0.0, r_hi = 0.0;    //!< the radial extent of the axis edge
 };
 
-//! Task: polygons of the dual contour. For every sign-changing MINIMAL edge (an edge of a leaf that no smaller
+//! Task: polygons of the dual contour (after place_vertices, which records the leaves' signs and vertices).
+//! For every sign-changing MINIMAL edge (an edge of a leaf that no smaller
 //! leaf subdivides), take the leaves in the four quadrants around it (locate() at the edge midpoint ± half a
 //! finest cell), drop repeats (adaptive trees), and emit a triangle or a quad split into 2 triangles (along the
 //! shorter diagonal), counter-clockwise around the edge's axis when the edge's lower end is inside (reversed
