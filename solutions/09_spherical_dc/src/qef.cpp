@@ -42,6 +42,41 @@ glm::dvec3 Qef::solve(double tau, glm::dvec3* mass_point_out, int* rank_out) con
         if (rank_out) *rank_out = 0;
         return m;
     }
+    // right-hand side about the mass point: r = Aᵀb − AᵀA m
+    const glm::dvec3 r = atb - glm::dvec3(ata[0] * m.x + ata[1] * m.y + ata[2] * m.z,
+                                          ata[1] * m.x + ata[3] * m.y + ata[4] * m.z,
+                                          ata[2] * m.x + ata[4] * m.y + ata[5] * m.z);
+    // Speed: the common case needs no decomposition. A small cell on a smooth surface sees nearly parallel
+    // normals: λ2 + λ3 = σ is tiny. With T = trace = λ1 + σ and S = sum of the principal 2×2 minors ≥ λ1 σ,
+    // S < (T − σ*) σ*, σ* = τ T / (1 + τ), proves σ < σ* < τ λ1 (both small eigenvalues truncated, rank 1); we
+    // ask for half of that bound, to stay clear of the threshold. Then λ1 is the largest root of
+    // det(λI − AᵀA) = λ³ − Tλ² + Sλ − D, reached by Newton from T (monotone: the cubic is convex and increasing
+    // above its largest root), and e1 is the largest cross product of two rows of AᵀA − λ1 I.
+    const double trace = ata[0] + ata[3] + ata[5];
+    const double minors = ata[0] * ata[3] - ata[1] * ata[1] + ata[0] * ata[5] - ata[2] * ata[2] +
+                          ata[3] * ata[5] - ata[4] * ata[4];
+    const double sigma = tau * trace / (1.0 + tau);
+    if (tau > 0.0 && tau < 1.0 && trace > 0.0 && minors < 0.5 * (trace - sigma) * sigma) {
+        const double det = ata[0] * (ata[3] * ata[5] - ata[4] * ata[4]) - ata[1] * (ata[1] * ata[5] - ata[4] * ata[2]) +
+                           ata[2] * (ata[1] * ata[4] - ata[3] * ata[2]);
+        double l1 = trace;
+        for (int it = 0; it < 16; ++it) {
+            const double p = ((l1 - trace) * l1 + minors) * l1 - det, dp = (3.0 * l1 - 2.0 * trace) * l1 + minors;
+            const double step = dp > 0.0 ? p / dp : 0.0;
+            l1 -= step;
+            if (!(step > 1e-15 * l1)) break;
+        }
+        const glm::dvec3 r0(ata[0] - l1, ata[1], ata[2]), r1(ata[1], ata[3] - l1, ata[4]), r2(ata[2], ata[4], ata[5] - l1);
+        glm::dvec3 e = glm::cross(r0, r1);
+        for (const glm::dvec3& c : {glm::cross(r0, r2), glm::cross(r1, r2)})
+            if (glm::dot(c, c) > glm::dot(e, e)) e = c;
+        const double len2 = glm::dot(e, e);
+        if (len2 > 0.0 && l1 > 0.0) {
+            e /= std::sqrt(len2);
+            if (rank_out) *rank_out = 1;
+            return m + e * (glm::dot(e, r) / l1);
+        }
+    }
     // symmetric eigen-decomposition AᵀA = V diag(λ) Vᵀ by cyclic Jacobi rotations (Golub & Van Loan §8.5)
     double a[3][3] = {{ata[0], ata[1], ata[2]}, {ata[1], ata[3], ata[4]}, {ata[2], ata[4], ata[5]}};
     double v[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
@@ -78,10 +113,6 @@ glm::dvec3 Qef::solve(double tau, glm::dvec3* mass_point_out, int* rank_out) con
         rotate(1, 2, 0);
     }
     double lmax = std::max({std::abs(a[0][0]), std::abs(a[1][1]), std::abs(a[2][2])});
-    // right-hand side about the mass point: r = Aᵀb − AᵀA m
-    glm::dvec3 r = atb - glm::dvec3(ata[0] * m.x + ata[1] * m.y + ata[2] * m.z,
-                                    ata[1] * m.x + ata[3] * m.y + ata[4] * m.z,
-                                    ata[2] * m.x + ata[4] * m.y + ata[5] * m.z);
     glm::dvec3 x = m;
     int rank = 0;
     for (int i = 0; i < 3; ++i) {

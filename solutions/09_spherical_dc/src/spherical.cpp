@@ -43,6 +43,7 @@ double find_root(FunctionRef g, double g0, double g1, double tolerance) {
         t = denom != 0.0 ? (t0 * f1 - t1 * f0) / denom : 0.5 * (t0 + t1);
         if (!(t > t0)) return t0;  // f0 ≈ 0: the bracket's end is the root
         if (!(t < t1)) return t1;
+        if (std::abs(t - prev) < 0.125 * tolerance) break;  // converged: g(t) would only move the bracket
         double ft = g(t);
         if (inside(ft) == in0) {
             t0 = t, f0 = ft;
@@ -53,7 +54,7 @@ double find_root(FunctionRef g, double g0, double g1, double tolerance) {
             if (side == +1) f0 *= 0.5;
             side = +1;
         }
-        if (t1 - t0 < tolerance || std::abs(t - prev) < 0.125 * tolerance) break;
+        if (t1 - t0 < tolerance) break;
         prev = t;
     }
     return t;
