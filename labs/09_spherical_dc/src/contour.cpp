@@ -1,5 +1,6 @@
 // Lab 09 — task 4: dual vertices, simplification and polygons; the Cartesian one-shot function.
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
@@ -12,6 +13,8 @@
 
 namespace geolab::dc {
 
+
+
 std::size_t place_vertices(Octree& tree, const VertexParams& params) {
     throw geolab::NotImplemented(__func__);
 }
@@ -19,6 +22,7 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params) {
 std::size_t simplify(Octree& tree, double tolerance, double tau) {
     throw geolab::NotImplemented(__func__);
 }
+
 
 PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles) {
     throw geolab::NotImplemented(__func__);

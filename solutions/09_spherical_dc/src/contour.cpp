@@ -1,5 +1,6 @@
 // Lab 09 — task 4: dual vertices, simplification and polygons; the Cartesian one-shot function.
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
@@ -11,6 +12,94 @@
 #include "geolab/errors.hpp"
 
 namespace geolab::dc {
+
+// BEGIN SOLUTION
+// STUB:
+namespace {
+// quadrants around an edge along axis a, counter-clockwise seen from +a: (−,−), (+,−), (+,+), (−,+) in (b, c)
+constexpr int qb[4] = {-1, +1, +1, -1}, qc[4] = {-1, -1, +1, +1};
+// The 12 edges of a cell: corner c → corner d = c + e_a, and the quadrant the cell occupies around that edge.
+struct CellEdge {
+    int c, d, a, quadrant;
+    int b, cax;          // the other two axes, (a + 1) % 3 and (a + 2) % 3
+    int my_b, my_c;      // the cell's side of the edge along b and cax (−1 or +1): qb[quadrant], qc[quadrant]
+};
+constexpr std::array<CellEdge, 12> make_cell_edges() {
+    std::array<CellEdge, 12> out{};
+    int n = 0;
+    for (int a = 0; a < 3; ++a)
+        for (int c = 0; c < 8; ++c) {
+            if (c & (1 << a)) continue;
+            const int b = (a + 1) % 3, cax = (a + 2) % 3;
+            const int my_b = (c & (1 << b)) ? -1 : +1, my_c = (c & (1 << cax)) ? -1 : +1;
+            int k = 0;
+            while (qb[k] != my_b || qc[k] != my_c) ++k;
+            out[n++] = {c, c | (1 << a), a, k, b, cax, my_b, my_c};
+        }
+    return out;
+}
+constexpr std::array<CellEdge, 12> cell_edges = make_cell_edges();
+// Speed: for each sign configuration (OctreeNode::signs), the edges that change sign (indices into cell_edges),
+// so that the loops visit those only.
+struct EdgeList {
+    int n = 0;
+    std::uint8_t e[12] = {};
+};
+constexpr std::array<EdgeList, 256> make_edge_lists() {
+    std::array<EdgeList, 256> out{};
+    for (int signs = 0; signs < 256; ++signs)
+        for (int i = 0; i < 12; ++i)
+            if (((signs >> cell_edges[i].c) ^ (signs >> cell_edges[i].d)) & 1)
+                out[signs].e[out[signs].n++] = std::uint8_t(i);
+    return out;
+}
+constexpr std::array<EdgeList, 256> changing_edges = make_edge_lists();
+// Speed: the sign tests of simplify as tables. point[child][c]: the sub-lattice point (i + 3j + 9k, i, j, k ∈ {0,1,2})
+// of the parent that is corner c of child `child` (so point[c][c] is the parent's corner c). single_sheet[m]: the
+// parent corners inside (bit c of m) and those outside are each connected through cube edges. feature[p]: for a
+// point p with a coordinate 1 (the centre of an edge, a face or the cell), the parent corners of that feature
+// (each 1 replaced by 0 or 2); 0 for the parent's corners.
+struct SimplifyTables {
+    int point[8][8] = {};
+    bool single_sheet[256] = {};
+    int feature[27] = {};
+};
+constexpr bool corners_connected(int mask) {
+    if (mask == 0) return true;
+    int seen = mask & -mask, frontier = seen;
+    while (frontier) {
+        int next = 0;
+        for (int c = 0; c < 8; ++c)
+            if (frontier & (1 << c))
+                for (int a = 0; a < 3; ++a) next |= 1 << (c ^ (1 << a));
+        next &= mask & ~seen;
+        seen |= next;
+        frontier = next;
+    }
+    return seen == mask;
+}
+constexpr SimplifyTables make_simplify_tables() {
+    SimplifyTables t;
+    for (int child = 0; child < 8; ++child)
+        for (int c = 0; c < 8; ++c)
+            t.point[child][c] = ((child & 1) + (c & 1)) + 3 * (((child >> 1) & 1) + ((c >> 1) & 1)) +
+                                9 * ((child >> 2) + (c >> 2));
+    for (int m = 0; m < 256; ++m) t.single_sheet[m] = corners_connected(m) && corners_connected(~m & 0xff);
+    for (int p = 0; p < 27; ++p) {
+        const int ijk[3] = {p % 3, (p / 3) % 3, p / 9};
+        if (ijk[0] != 1 && ijk[1] != 1 && ijk[2] != 1) continue;
+        for (int c = 0; c < 8; ++c) {
+            bool on = true;
+            for (int a = 0; a < 3; ++a)
+                if (ijk[a] != 1 && ijk[a] != 2 * ((c >> a) & 1)) on = false;
+            if (on) t.feature[p] |= 1 << c;
+        }
+    }
+    return t;
+}
+constexpr SimplifyTables simplify_tables = make_simplify_tables();
+}  // namespace
+// END SOLUTION
 
 std::size_t place_vertices(Octree& tree, const VertexParams& params) {
     // BEGIN SOLUTION
@@ -35,36 +124,35 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params) {
         if (nd.signs == 0 || nd.signs == 0xff) return;
         // Hermite data on the 12 edges: corner c → c | (1 << a) for the corners c with bit a clear
         Qef qef;
-        for (int a = 0; a < 3; ++a)
-            for (int c = 0; c < 8; ++c) {
-                if (c & (1 << a)) continue;
-                const int d = c | (1 << a);
-                if (inside(v[c]) == inside(v[d])) continue;
-                // the radial edge on the polar axis appears twice (φ-lower and φ-upper corners): count it once
-                if (spherical && a == 0 && (c & 4) && (q[c].y == 0 || q[c].y == n_res)) continue;
-                std::uint32_t* cached = nullptr;
-                if (nd.level == tree.max_level) {
-                    glm::ivec3 m2 = 2 * tree.canonical(q[c]);
-                    m2[a] += 1;
-                    cached = &edge_crossing.slot(m2);
-                    if (*cached != invalid_index) {
-                        qef.add(computed[*cached].point, computed[*cached].normal);
-                        continue;
-                    }
-                }
-                Crossing x = spherical ? find_crossing_arc(*tree.field, tree.origin, tree.lattice_spherical(q[c]),
-                                                           tree.lattice_spherical(q[d]), v[c], v[d],
-                                                           params.crossing_tolerance)
-                                       : find_crossing(*tree.field, tree.lattice_point(q[c]),
-                                                       tree.lattice_point(q[d]), v[c], v[d],
-                                                       params.crossing_tolerance);
-                qef.add(x.point, x.normal);
-                ++crossings;
-                if (cached) {
-                    *cached = std::uint32_t(computed.size());
-                    computed.push_back(x);
+        const EdgeList& changing = changing_edges[nd.signs];
+        for (int ei = 0; ei < changing.n; ++ei) {
+            const CellEdge& e = cell_edges[changing.e[ei]];
+            const int a = e.a, c = e.c, d = e.d;
+            // the radial edge on the polar axis appears twice (φ-lower and φ-upper corners): count it once
+            if (spherical && a == 0 && (c & 4) && (q[c].y == 0 || q[c].y == n_res)) continue;
+            std::uint32_t* cached = nullptr;
+            if (nd.level == tree.max_level) {
+                glm::ivec3 m2 = 2 * tree.canonical(q[c]);
+                m2[a] += 1;
+                cached = &edge_crossing.slot(m2);
+                if (*cached != invalid_index) {
+                    qef.add(computed[*cached].point, computed[*cached].normal);
+                    continue;
                 }
             }
+            Crossing x = spherical ? find_crossing_arc(*tree.field, tree.origin, tree.lattice_spherical(q[c]),
+                                                       tree.lattice_spherical(q[d]), v[c], v[d],
+                                                       params.crossing_tolerance)
+                                   : find_crossing(*tree.field, tree.lattice_point(q[c]),
+                                                   tree.lattice_point(q[d]), v[c], v[d],
+                                                   params.crossing_tolerance);
+            qef.add(x.point, x.normal);
+            ++crossings;
+            if (cached) {
+                *cached = std::uint32_t(computed.size());
+                computed.push_back(x);
+            }
+        }
         if (qef.count == 0) return;  // only degenerate edges changed sign (cannot happen with canonical samples)
         glm::dvec3 x = qef.solve(params.tau);
         // keep the vertex in its cell
@@ -89,8 +177,8 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params) {
         glm::ivec3 q[8];
         double v[8];
         // Speed: finest leaves come as 8 siblings in a row (depth-first order); their 8 × 8 corners are the 27
-        // points of the parent's 3×3×3 sub-lattice. Look those up once, not 64 times: the sample cache is large
-        // and its look-ups (a hash probe when the block changes, then the value) often miss the processor caches.
+        // points of the parent's 3×3×3 sub-lattice. Look those up once, block by block (Octree::sub_lattice_values),
+        // not 64 times one by one.
         bool group = nd.level == tree.max_level && ((nd.x | nd.y | nd.z) & 1) == 0 && i + 8 <= leaves.size() &&
                      leaves[i + 7] == leaves[i] + 7;
         if (!group) {
@@ -100,9 +188,7 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params) {
         }
         const glm::ivec3 base = tree.corner(nd, 0);
         double sub[27];  // sub[l + 3 j + 9 k] = f(base + (l, j, k))
-        for (int k = 0; k < 3; ++k)
-            for (int j = 0; j < 3; ++j)
-                for (int l = 0; l < 3; ++l) sub[l + 3 * j + 9 * k] = tree.value(base + glm::ivec3(l, j, k));
+        tree.sub_lattice_values(base, sub);
         for (int child = 0; child < 8; ++child) {
             const glm::ivec3 o(child & 1, (child >> 1) & 1, child >> 2);
             for (int c = 0; c < 8; ++c) {
@@ -122,21 +208,6 @@ std::size_t simplify(Octree& tree, double tolerance, double tau) {
     // BEGIN SOLUTION
     if (tree.coordinates != Coordinates::cartesian)
         throw std::invalid_argument("simplify: only Cartesian octrees are simplified");
-    // are the corners in `mask` (bit c = corner c) connected through cube edges?
-    auto connected = [](int mask) {
-        if (mask == 0) return true;
-        int seen = mask & -mask, frontier = seen;
-        while (frontier) {
-            int next = 0;
-            for (int c = 0; c < 8; ++c)
-                if (frontier & (1 << c))
-                    for (int a = 0; a < 3; ++a) next |= 1 << (c ^ (1 << a));
-            next &= mask & ~seen;
-            seen |= next;
-            frontier = next;
-        }
-        return seen == mask;
-    };
     std::size_t collapses = 0;
     // children always have larger indices than their parent: one reverse sweep is bottom-up
     for (std::size_t ni = tree.nodes.size(); ni-- > 0;) {
@@ -145,34 +216,27 @@ std::size_t simplify(Octree& tree, double tolerance, double tau) {
         bool all_leaves = true;
         for (int c = 0; c < 8 && all_leaves; ++c) all_leaves = tree.nodes[nd.first_child + c].is_leaf();
         if (!all_leaves) continue;
-        // (1) the parent's corner signs form one sheet
         const std::int32_t s = tree.cell_span(nd.level);
         const glm::ivec3 base = tree.corner(nd, 0);
-        // inside at the sub-lattice point base + (i, j, k) h, (i, j, k) ∈ {0,1,2}³: a corner of the child
-        // (min(i,1), min(j,1), min(k,1)), whose sign configuration place_vertices recorded
-        auto sign_at = [&](int i, int j, int k) {
-            const int ci = std::min(i, 1), cj = std::min(j, 1), ck = std::min(k, 1);
-            const OctreeNode& child = tree.nodes[nd.first_child + ci + 2 * cj + 4 * ck];
-            return child.corner_inside((i - ci) + 2 * (j - cj) + 4 * (k - ck));
-        };
+        // the signs at the 27 sub-lattice points (bit i + 3j + 9k): the children's corners, which place_vertices
+        // recorded in their sign configurations
+        std::uint32_t sub = 0;
+        for (int child = 0; child < 8; ++child) {
+            const unsigned signs = tree.nodes[nd.first_child + child].signs;
+            for (int c = 0; c < 8; ++c) sub |= ((signs >> c) & 1u) << simplify_tables.point[child][c];
+        }
+        // (1) the parent's corner signs form one sheet
         int in_mask = 0;
-        for (int c = 0; c < 8; ++c)
-            if (sign_at(2 * (c & 1), (c & 2), (c & 4) / 2)) in_mask |= 1 << c;
-        if (!connected(in_mask) || !connected(~in_mask & 0xff)) continue;
-        // (2) every sub-lattice point (i, j, k) ∈ {0,1,2}³ with a 1 agrees with a corner of the parent's
-        //     edge / face / cell it is the centre of: the corners obtained by replacing each 1 with 0 or 2
+        for (int c = 0; c < 8; ++c) in_mask |= int((sub >> simplify_tables.point[c][c]) & 1u) << c;
+        if (!simplify_tables.single_sheet[in_mask]) continue;
+        // (2) every sub-lattice point that is the centre of an edge, face or the cell agrees with one of that
+        //     feature's corners
         bool safe = true;
-        for (int i = 0; i < 3 && safe; ++i)
-            for (int j = 0; j < 3 && safe; ++j)
-                for (int k = 0; k < 3 && safe; ++k) {
-                    if (i != 1 && j != 1 && k != 1) continue;
-                    bool sm = sign_at(i, j, k), agrees = false;
-                    for (int c = 0; c < 8 && !agrees; ++c) {
-                        int ci = i == 1 ? 2 * (c & 1) : i, cj = j == 1 ? (c & 2) : j, ck = k == 1 ? (c & 4) / 2 : k;
-                        agrees = sign_at(ci, cj, ck) == sm;
-                    }
-                    safe = agrees;
-                }
+        for (int p = 0; p < 27 && safe; ++p) {
+            const int corners = simplify_tables.feature[p];
+            if (corners == 0) continue;  // a corner of the parent
+            safe = (((sub >> p) & 1u) ? in_mask : ~in_mask) & corners;
+        }
         if (!safe) continue;
         // (3) the merged QEF fits well and its minimiser lies in the cell
         Qef merged;
@@ -202,6 +266,7 @@ std::size_t simplify(Octree& tree, double tolerance, double tau) {
     // END SOLUTION
 }
 
+
 PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles) {
     // BEGIN SOLUTION
     // a leaf as the polygons see it: node index, dual vertex (or invalid_index) and level. A finest leaf found
@@ -229,18 +294,19 @@ PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles) {
     // costs a cache miss per vertex, from here mostly cache hits.
     std::vector<glm::dvec3> position(tree.vertices.size());
     for (std::size_t i = 0; i < position.size(); ++i) position[i] = tree.vertices[i].position;
+    auto soup_index = [&](std::uint32_t vertex) {
+        if (remap[vertex] == invalid_index) {
+            remap[vertex] = std::uint32_t(soup.positions.size());
+            soup.positions.push_back(position[vertex]);
+        }
+        return remap[vertex];
+    };
     auto soup_vertex = [&](const LeafRef& l) {
         if (l.vertex == invalid_index)
             throw TopologyError("contour: leaf " + std::to_string(l.leaf) + " around a sign-changing edge has no vertex");
-        if (remap[l.vertex] == invalid_index) {
-            remap[l.vertex] = std::uint32_t(soup.positions.size());
-            soup.positions.push_back(position[l.vertex]);
-        }
-        return remap[l.vertex];
+        return soup_index(l.vertex);
     };
     auto leaf_ref = [&](std::uint32_t l) { return LeafRef{l, tree.nodes[l].vertex, tree.nodes[l].level}; };
-    // quadrants around an edge along axis a, counter-clockwise seen from +a: (−,−), (+,−), (+,+), (−,+) in (b, c)
-    static constexpr int qb[4] = {-1, +1, +1, -1}, qc[4] = {-1, -1, +1, +1};
     const std::vector<std::uint32_t> leaves = tree.leaves();
     // finest leaves by cell index: neighbours at the finest level without descending the tree. Speed: the grid
     // holds their vertex (4 bytes a cell), so that the (large) node array is not read again for them.
@@ -261,25 +327,68 @@ PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles) {
         std::uint32_t l = tree.locate(p2);
         return l == invalid_index ? LeafRef{} : leaf_ref(l);
     };
+    // the vertex of the finest leaf in finest cell `cell`, or invalid_index when that cell is not a finest leaf with
+    // a vertex (or outside the domain)
+    auto finest_vertex = [&](glm::ivec3 cell) {
+        if (spherical) cell.z &= n_res - 1;
+        if (cell.x < 0 || cell.y < 0 || cell.z < 0 || cell.x >= n_res || cell.y >= n_res || cell.z >= n_res)
+            return invalid_index;
+        const std::uint32_t v = finest.get(cell);
+        return v == not_finest || v == no_vertex ? invalid_index : v;
+    };
+    auto emit_polygon = [&](const std::uint32_t* w, int m) {
+        if (m == 3) {
+            soup.add_face({w[0], w[1], w[2]});
+        } else {  // split along the shorter diagonal
+            const auto& P = soup.positions;
+            if (glm::distance(P[w[0]], P[w[2]]) <= glm::distance(P[w[1]], P[w[3]])) {
+                soup.add_face({w[0], w[1], w[2]});
+                soup.add_face({w[0], w[2], w[3]});
+            } else {
+                soup.add_face({w[0], w[1], w[3]});
+                soup.add_face({w[1], w[2], w[3]});
+            }
+        }
+    };
     for (std::uint32_t li : leaves) {
         const OctreeNode& nd = tree.nodes[li];
         if (nd.vertex == invalid_index) continue;
         const std::int32_t span = tree.cell_span(nd.level);
-        glm::ivec3 q[8];
-        for (int c = 0; c < 8; ++c) q[c] = tree.corner(nd, c);
-        for (int a = 0; a < 3; ++a) {
-            const int b = (a + 1) % 3, cax = (a + 2) % 3;
-            for (int c = 0; c < 8; ++c) {
-                if (c & (1 << a)) continue;
-                const int d = c | (1 << a);
-                if (nd.corner_inside(c) == nd.corner_inside(d)) continue;
-                const glm::ivec3 q0 = q[c];
-                if (spherical) {
-                    if (a == 0 && (q0.y == 0 || q0.y == n_res)) continue;  // on the polar axis: a pole ring
-                    if (a != 0 && q0.x == 0) continue;                     // on the inner sphere: no cells below
+        const bool finest_leaf = nd.level == tree.max_level;
+        const glm::ivec3 cell(nd.x, nd.y, nd.z);
+        const EdgeList& changing = changing_edges[nd.signs];
+        for (int ei = 0; ei < changing.n; ++ei) {
+            const CellEdge& e = cell_edges[changing.e[ei]];
+            const int a = e.a, b = e.b, cax = e.cax, c = e.c, my_b = e.my_b, my_c = e.my_c;
+            const glm::ivec3 q0 = tree.corner(nd, c);
+            if (spherical) {
+                if (a == 0 && (q0.y == 0 || q0.y == n_res)) continue;  // on the polar axis: a pole ring
+                if (a != 0 && q0.x == 0) continue;                     // on the inner sphere: no cells below
+            }
+            if (finest_leaf) {
+                // Speed: where the 4 leaves around the edge are finest (the common case), the leaf in quadrant 0
+                // emits the quad; the others only check that it exists. Anything else takes the general path.
+                auto quadrant_cell = [&](int k) {
+                    glm::ivec3 q = cell;
+                    q[b] += (qb[k] - my_b) / 2;
+                    q[cax] += (qc[k] - my_c) / 2;
+                    return q;
+                };
+                if (e.quadrant != 0) {
+                    if (finest_vertex(quadrant_cell(0)) != invalid_index) continue;
+                } else {
+                    std::uint32_t v[4] = {nd.vertex, finest_vertex(quadrant_cell(1)), finest_vertex(quadrant_cell(2)),
+                                          finest_vertex(quadrant_cell(3))};
+                    if (v[1] != invalid_index && v[2] != invalid_index && v[3] != invalid_index) {
+                        std::uint32_t w[4];
+                        const bool lower_inside = nd.corner_inside(c);
+                        for (int k = 0; k < 4; ++k) w[k] = soup_index(v[lower_inside ? k : 3 - k]);
+                        emit_polygon(w, 4);
+                        continue;
+                    }
                 }
-                // this leaf's quadrant: the edge is on its upper side along b → the leaf is on the − side
-                const int my_b = (c & (1 << b)) ? -1 : +1, my_c = (c & (1 << cax)) ? -1 : +1;
+            }
+            {
                 glm::ivec3 m2 = 2 * q0;
                 m2[a] += span;
                 LeafRef around[4];
@@ -316,18 +425,7 @@ PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles) {
                 if (m < 3) continue;
                 std::uint32_t w[4];
                 for (int k = 0; k < m; ++k) w[k] = soup_vertex(poly[k]);
-                if (m == 3) {
-                    soup.add_face({w[0], w[1], w[2]});
-                } else {  // split along the shorter diagonal
-                    const auto& P = soup.positions;
-                    if (glm::distance(P[w[0]], P[w[2]]) <= glm::distance(P[w[1]], P[w[3]])) {
-                        soup.add_face({w[0], w[1], w[2]});
-                        soup.add_face({w[0], w[2], w[3]});
-                    } else {
-                        soup.add_face({w[0], w[1], w[3]});
-                        soup.add_face({w[1], w[2], w[3]});
-                    }
-                }
+                emit_polygon(w, m);
             }
         }
         // spherical: the radial edge on the polar axis, collected once by the leaf at φ index 0
@@ -337,7 +435,7 @@ PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles) {
             if (north ? nd.y != 0 : (std::int32_t(nd.y) + 1) * span != n_res) continue;
             const int c0 = north ? 0 : 2, c1 = c0 | 1;  // lower-φ corners on the axis, inner and outer radius
             if (nd.corner_inside(c0) == nd.corner_inside(c1)) continue;
-            glm::ivec3 p2(2 * q[c0].x + span, north ? 1 : 2 * n_res - 1, 0);
+            glm::ivec3 p2(2 * tree.corner(nd, c0).x + span, north ? 1 : 2 * n_res - 1, 0);
             std::vector<LeafRef> ring;
             bool minimal = true;
             for (std::int32_t k = 0; k < n_res && minimal; ++k) {
@@ -352,8 +450,8 @@ PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles) {
             if (nd.corner_inside(c0) != north) std::reverse(ring.begin(), ring.end());
             PoleRing pr;
             pr.north = north;
-            pr.r_lo = tree.lattice_spherical(q[c0]).r;
-            pr.r_hi = tree.lattice_spherical(q[c1]).r;
+            pr.r_lo = tree.lattice_spherical(tree.corner(nd, c0)).r;
+            pr.r_hi = tree.lattice_spherical(tree.corner(nd, c1)).r;
             for (const LeafRef& l : ring) pr.ring.push_back(soup_vertex(l));
             poles->push_back(std::move(pr));
         }

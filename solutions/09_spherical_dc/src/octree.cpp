@@ -72,12 +72,6 @@ void Octree::init_spherical(const ScalarField& f, int level, const glm::dvec3& o
     cos_p_[0] = cos_p_[n] = 1.0;
 }
 
-glm::ivec3 Octree::corner(const OctreeNode& n, int c) const {
-    const std::int32_t s = cell_span(n.level);
-    return {(std::int32_t(n.x) + (c & 1)) * s, (std::int32_t(n.y) + ((c >> 1) & 1)) * s,
-            (std::int32_t(n.z) + ((c >> 2) & 1)) * s};
-}
-
 Spherical Octree::lattice_spherical(glm::ivec3 q) const {
     const double n = resolution();
     if (coordinates == Coordinates::cartesian) {
@@ -87,9 +81,8 @@ Spherical Octree::lattice_spherical(glm::ivec3 q) const {
     return {r_min + (r_max - r_min) * (q.x / n), pi * (q.y / n), 2.0 * pi * (q.z / n)};
 }
 
-glm::dvec3 Octree::lattice_point(glm::ivec3 q) const {
+glm::dvec3 Octree::spherical_lattice_point(glm::ivec3 q) const {
     const double n = resolution();
-    if (coordinates == Coordinates::cartesian) return min_corner + (size / n) * glm::dvec3(q);
     const std::int32_t ni = resolution();
     double r = r_min + (r_max - r_min) * (q.x / n);
     std::int32_t t = std::clamp(q.y, 0, ni);
@@ -104,6 +97,40 @@ double Octree::sample(glm::ivec3 q) const {
 }
 
 glm::dvec3 Octree::spherical_point(const Spherical& s) const { return origin + to_cartesian(s); }
+
+void Octree::sub_lattice_values(glm::ivec3 base, double (&out)[27]) const {
+    if (coordinates == Coordinates::spherical) {  // the seam and the poles map points to canonical ones
+        for (int k = 0; k < 3; ++k)
+            for (int j = 0; j < 3; ++j)
+                for (int i = 0; i < 3; ++i) out[i + 3 * j + 9 * k] = value(base + glm::ivec3(i, j, k));
+        return;
+    }
+    // Speed: per axis the offsets 0..2 fall into one block, or two (split where the block boundary falls); look each
+    // block up once and index its slots directly.
+    constexpr int b = BlockGrid<double>::B;
+    const double h = size / resolution();
+    int split[3];  // offsets below split[a] are in the lower block along axis a
+    for (int a = 0; a < 3; ++a) split[a] = std::min(3, b - (base[a] & (b - 1)));
+    for (int bz = 0; bz < (split[2] < 3 ? 2 : 1); ++bz)
+        for (int by = 0; by < (split[1] < 3 ? 2 : 1); ++by)
+            for (int bx = 0; bx < (split[0] < 3 ? 2 : 1); ++bx) {
+                const int i0 = bx ? split[0] : 0, j0 = by ? split[1] : 0, k0 = bz ? split[2] : 0;
+                const int i1 = bx || split[0] == 3 ? 3 : split[0], j1 = by || split[1] == 3 ? 3 : split[1],
+                          k1 = bz || split[2] == 3 ? 3 : split[2];
+                double* slots = cache_.block_of(base + glm::ivec3(i0, j0, k0));
+                for (int k = k0; k < k1; ++k)
+                    for (int j = j0; j < j1; ++j)
+                        for (int i = i0; i < i1; ++i) {
+                            const glm::ivec3 q(base.x + i, base.y + j, base.z + k);
+                            double& v = slots[BlockGrid<double>::index_in_block(q)];
+                            if (v != v) {
+                                ++samples_;
+                                v = field->value(min_corner + h * glm::dvec3(q));  // = sample(q), Cartesian
+                            }
+                            out[i + 3 * j + 9 * k] = v;
+                        }
+            }
+}
 
 std::uint32_t Octree::locate(glm::ivec3 p2) const {
     const std::int32_t n2 = 2 * resolution();
@@ -255,6 +282,9 @@ Octree build_octree(const ScalarField& f, const CartesianParams& params) {
     for (std::uint32_t n = 0; n < tree.nodes.size(); ++n) {
         const OctreeNode nd = tree.nodes[n];
         if (nd.level >= tree.max_level) continue;
+        // Speed: the last level is most of the tree; reserve it once (the nodes of level L − 1 are n..end)
+        if (nd.level == tree.max_level - 1 && tree.nodes[n - 1].level != nd.level)
+            tree.nodes.reserve(tree.nodes.size() + 8 * (tree.nodes.size() - n));
         const std::int32_t s = tree.cell_span(nd.level);
         glm::ivec3 center(std::int32_t(nd.x) * s + s / 2, std::int32_t(nd.y) * s + s / 2,
                           std::int32_t(nd.z) * s + s / 2);

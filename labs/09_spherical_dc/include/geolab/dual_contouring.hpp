@@ -204,6 +204,14 @@ public:
         if (key != last_key_ && !find_block(key, false)) return empty_;
         return block(last_id_)[local(q)];
     }
+    //! The B³ slots of the block holding q (created if needed), to be indexed by index_in_block.
+    T* block_of(glm::ivec3 q) {
+        const std::uint64_t key = block_key(q);
+        if (key != last_key_) find_block(key, true);
+        return block(last_id_);
+    }
+    //! The index of q's slot within its block.
+    static std::size_t index_in_block(glm::ivec3 q) { return local(q); }
     void clear() {
         keys_.clear();
         ids_.clear();
@@ -336,7 +344,11 @@ public:
     //! Width of a cell of level l in lattice units: 2^(L − l).
     std::int32_t cell_span(int level) const { return std::int32_t(1) << (max_level - level); }
     //! Lattice coordinates of corner c (bits cx, cy, cz as for children) of node n.
-    glm::ivec3 corner(const OctreeNode& n, int c) const;
+    glm::ivec3 corner(const OctreeNode& n, int c) const {
+        const std::int32_t s = cell_span(n.level);
+        return {(std::int32_t(n.x) + (c & 1)) * s, (std::int32_t(n.y) + ((c >> 1) & 1)) * s,
+                (std::int32_t(n.z) + ((c >> 2) & 1)) * s};
+    }
 
     //! The canonical form of a lattice point: φ index modulo N; on the polar axis (θ index 0 or N) φ = 0;
     //! at r = 0 (r_min == 0, r index 0) θ = φ = 0. Identity for Cartesian octrees.
@@ -352,13 +364,19 @@ public:
     //! (z = N gives φ = 2π, so arcs of the last sector interpolate correctly).
     Spherical lattice_spherical(glm::ivec3 q) const;
     //! The Cartesian position of a lattice point (exact on the polar axis, see to_cartesian).
-    glm::dvec3 lattice_point(glm::ivec3 q) const;
+    glm::dvec3 lattice_point(glm::ivec3 q) const {
+        if (coordinates == Coordinates::cartesian) return min_corner + (size / resolution()) * glm::dvec3(q);
+        return spherical_lattice_point(q);
+    }
     //! f at a lattice point, evaluated once and cached under canonical(q) (the cache is mutable: not thread-safe).
     double value(glm::ivec3 q) const {
         double& v = cache_.slot(canonical(q));
         if (v != v) v = sample(q);  // NaN: not sampled yet
         return v;
     }
+    //! The samples at the 27 points base + (i, j, k), i, j, k ∈ {0, 1, 2}, into out[i + 3j + 9k]: value() of each,
+    //! fetched block by block (the 8 finest children of one parent have these 27 corners).
+    void sub_lattice_values(glm::ivec3 base, double (&out)[27]) const;
     //! The Cartesian position of a point given in spherical parameters relative to `origin` (spherical octrees).
     glm::dvec3 spherical_point(const Spherical& s) const;
 
@@ -390,6 +408,7 @@ private:
     mutable BlockGrid<double> cache_{std::numeric_limits<double>::quiet_NaN()};
     mutable std::size_t samples_ = 0;
     double sample(glm::ivec3 q) const;  // f(lattice_point(q)), counted
+    glm::dvec3 spherical_lattice_point(glm::ivec3 q) const;
     std::vector<double> sin_t_, cos_t_, sin_p_, cos_p_;  // spherical lattice tables, N + 1 entries each
 };
 
