@@ -203,6 +203,71 @@ TEST_CASE("place_vertices (spherical): each vertex lies in its cell in (r theta 
                                                    "NEARER end of the cell's arc, across the seam)" << first.str());
 }
 
+TEST_CASE("place_vertices (spherical): each QEF holds its own cell's crossings; also at the poles and the origin" *
+          geolab::points(1) *
+          geolab::hint("Octree::canonical merges the lattice points on the polar axis (all phi) and, with r_min = 0, "
+                       "at the origin. Key the crossing cache by the lower end alone and every theta-edge leaving a "
+                       "pole (or radial edge leaving the origin) shares one crossing: file those edges under their "
+                       "upper end. Handout §4.")) {
+    // the test's own crossings: bisection along the (r, theta, phi) path, 200 halvings, sign by f <= 0
+    auto crossing = [](const ScalarField& f, const Octree& t, glm::ivec3 qa, glm::ivec3 qb) {
+        const Spherical a = t.lattice_spherical(qa), b = t.lattice_spherical(qb);
+        auto at = [&](double s) {
+            return t.origin + cart_of(a.r + s * (b.r - a.r), a.theta + s * (b.theta - a.theta), a.phi + s * (b.phi - a.phi));
+        };
+        const bool in0 = f.value(at(0.0)) <= 0.0;
+        double lo = 0.0, hi = 1.0;
+        for (int i = 0; i < 200 && hi - lo > 1e-15; ++i) {
+            const double mid = 0.5 * (lo + hi);
+            ((f.value(at(mid)) <= 0.0) == in0 ? lo : hi) = mid;
+        }
+        return at(0.5 * (lo + hi));
+    };
+    const FieldPtr f = geolab::sphere({0.1, -0.05, 0.2}, 0.7);
+    struct Case {
+        glm::dvec3 origin;
+        double r_max;
+        const char* what;
+    } cases[] = {{{0.0, 0.0, 0.0}, 1.2, "origin inside; the surface cuts the theta-edges leaving the poles"},
+                 {{0.1, -0.05, 0.2 - 0.69}, 1.6, "origin 0.01 inside the surface: it cuts radial edges leaving the origin"}};
+    for (const Case& cs : cases)
+        for (int L : {4, 5}) {
+            Octree t = build_spherical_octree(*f, L, cs.origin, 0.0, cs.r_max);
+            place_vertices(t, {});
+            const int n = t.resolution();
+            const double unit = cs.r_max / n;
+            std::size_t bad = 0, checked = 0;
+            std::ostringstream first;
+            for (std::uint32_t li : tree_shape(t).leaves) {
+                const OctreeNode& nd = t.nodes[li];
+                if (nd.vertex == invalid_index) continue;
+                REQUIRE(nd.vertex < t.vertices.size());
+                glm::dvec3 sum(0.0);
+                int count = 0;
+                for (int a = 0; a < 3; ++a)
+                    for (int c = 0; c < 8; ++c) {
+                        if (c & (1 << a)) continue;
+                        const glm::ivec3 q0 = t.corner(nd, c), q1 = t.corner(nd, c | (1 << a));
+                        if ((t.value(q0) <= 0.0) == (t.value(q1) <= 0.0)) continue;
+                        if (a == 0 && (c & 4) && (q0.y == 0 || q0.y == n)) continue;  // the axis edge, once
+                        sum += crossing(*f, t, q0, q1);
+                        ++count;
+                    }
+                ++checked;
+                const Qef& qef = t.vertices[nd.vertex].qef;
+                const double err = count == qef.count ? glm::length(qef.mass_point() - sum / double(count)) : 1e300;
+                if (err > 1e-5 * unit && bad++ < 3)
+                    first << "\n  leaf (" << nd.x << ", " << nd.y << ", " << nd.z << "): qef.count " << qef.count
+                          << " (cell's sign-changing edges: " << count << "), mass point "
+                          << str(qef.mass_point()) << ", expected " << str(sum / double(std::max(count, 1)));
+            }
+            INFO(std::string(cs.what) << ", origin " << str(cs.origin) << ", shell [0, " << cs.r_max << "], level " << L);
+            CHECK(checked > 100);
+            CHECK_MESSAGE(bad == 0, bad << " of " << checked << " vertices have a QEF built from other cells' "
+                                                                 "crossings" << first.str());
+        }
+}
+
 TEST_CASE("dual_contour_spherical: a sphere across the phi = 0 seam leaves no crack" * geolab::points(2) *
           geolab::hint("The lattice's phi index is taken modulo N: the cells at phi index N-1 and 0 are neighbours "
                        "(Octree::canonical / locate wrap it). Look up the 4 leaves around an edge with the wrapped "

@@ -23,6 +23,7 @@ struct CellEdge {
     int c, d, a, quadrant;
     int b, cax;          // the other two axes, (a + 1) % 3 and (a + 2) % 3
     int my_b, my_c;      // the cell's side of the edge along b and cax (−1 or +1): qb[quadrant], qc[quadrant]
+    int dx[4], dy[4], dz[4];  // finest cells only: the cell in quadrant k is this cell + (dx, dy, dz)[k]
 };
 constexpr std::array<CellEdge, 12> make_cell_edges() {
     std::array<CellEdge, 12> out{};
@@ -34,7 +35,14 @@ constexpr std::array<CellEdge, 12> make_cell_edges() {
             const int my_b = (c & (1 << b)) ? -1 : +1, my_c = (c & (1 << cax)) ? -1 : +1;
             int k = 0;
             while (qb[k] != my_b || qc[k] != my_c) ++k;
-            out[n++] = {c, c | (1 << a), a, k, b, cax, my_b, my_c};
+            CellEdge e{c, c | (1 << a), a, k, b, cax, my_b, my_c, {}, {}, {}};
+            for (int j = 0; j < 4; ++j) {
+                int d[3] = {0, 0, 0};
+                d[b] = (qb[j] - my_b) / 2;
+                d[cax] = (qc[j] - my_c) / 2;
+                e.dx[j] = d[0], e.dy[j] = d[1], e.dz[j] = d[2];
+            }
+            out[n++] = e;
         }
     return out;
 }
@@ -108,8 +116,17 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params) {
     const std::int32_t n_res = tree.resolution();
     std::size_t crossings = 0;
     const std::vector<std::uint32_t> leaves = tree.leaves();
-    // finest edges are shared by 4 leaves: compute each crossing once, keyed by the edge's doubled midpoint
-    BlockGrid<std::uint32_t> edge_crossing(invalid_index, 2 * n_res + 1);
+    // finest edges are shared by 4 leaves: compute each crossing once. An edge is filed under its lower end (3 slots:
+    // the edges along +x, +y, +z), as canonical() names it. Spherical trees: canonical() merges the lattice points
+    // on the polar axis (all φ) and, when r_min = 0, at the origin, so the θ-edges leaving a pole or the radial edges
+    // leaving the origin would share one slot; an edge whose lower end is such a point is filed under its upper end
+    // in a second grid instead (the radial edges on the axis, one edge for all φ, then still share theirs).
+    using EdgeSlots = std::array<std::uint32_t, 3>;
+    const EdgeSlots no_edges{invalid_index, invalid_index, invalid_index};
+    BlockGrid<EdgeSlots> edge_crossing(no_edges, n_res + 1), edge_crossing_into(no_edges, n_res + 1);
+    auto merged_point = [&](glm::ivec3 q) {
+        return spherical && (q.y == 0 || q.y == n_res || (q.x == 0 && tree.r_min == 0.0));
+    };
     std::vector<Crossing> computed;
     // Speed: in the conservative band about half the leaves are cut by the surface, each with about one new crossing;
     // reserving that much avoids most copies of these large arrays while they grow.
@@ -132,9 +149,8 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params) {
             if (spherical && a == 0 && (c & 4) && (q[c].y == 0 || q[c].y == n_res)) continue;
             std::uint32_t* cached = nullptr;
             if (nd.level == tree.max_level) {
-                glm::ivec3 m2 = 2 * tree.canonical(q[c]);
-                m2[a] += 1;
-                cached = &edge_crossing.slot(m2);
+                cached = merged_point(q[c]) ? &edge_crossing_into.slot(tree.canonical(q[d]))[a]
+                                            : &edge_crossing.slot(tree.canonical(q[c]))[a];
                 if (*cached != invalid_index) {
                     qef.add(computed[*cached].point, computed[*cached].normal);
                     continue;
@@ -368,12 +384,7 @@ PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles) {
             if (finest_leaf) {
                 // Speed: where the 4 leaves around the edge are finest (the common case), the leaf in quadrant 0
                 // emits the quad; the others only check that it exists. Anything else takes the general path.
-                auto quadrant_cell = [&](int k) {
-                    glm::ivec3 q = cell;
-                    q[b] += (qb[k] - my_b) / 2;
-                    q[cax] += (qc[k] - my_c) / 2;
-                    return q;
-                };
+                auto quadrant_cell = [&](int k) { return cell + glm::ivec3(e.dx[k], e.dy[k], e.dz[k]); };
                 if (e.quadrant != 0) {
                     if (finest_vertex(quadrant_cell(0)) != invalid_index) continue;
                 } else {

@@ -458,7 +458,9 @@ struct VertexParams {
 //! outside the cell, clamp it to the cell (Cartesian: the box; spherical: clamp r, θ and φ — φ measured
 //! relative to the cell, across the seam — to the cell's intervals). Edges that degenerate to a point (φ-edges on
 //! the polar axis, θ/φ-edges at r = 0) have no crossing; a radial edge on the axis is counted once.
-//! Finest edges are shared by 4 leaves: compute each crossing once (a BlockGrid keyed by the edge midpoint).
+//! Finest edges are shared by 4 leaves: compute each crossing once (a BlockGrid keyed by the edge's lower end; on a
+//! spherical tree an edge whose lower end canonical() merges — the polar axis, the origin when r_min = 0 — must be
+//! keyed by its upper end, or all the θ-edges leaving a pole would share one crossing).
 //! Also record every leaf's sign configuration in OctreeNode::signs (leaves without a vertex too).
 //! Replaces tree.vertices. \return the number of crossings computed.
 std::size_t place_vertices(Octree& tree, const VertexParams& params);
