@@ -133,7 +133,11 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params) {
     tree.vertices.reserve(leaves.size() / 2);
     computed.reserve(leaves.size() / 2);
     // Hermite data and vertex of leaf li, given its corner lattice points q and samples v
-    auto place = [&](std::uint32_t li, const glm::ivec3 (&q)[8], const double (&v)[8]) {
+    // Hermite data and vertex of leaf li, given its corner lattice points q and samples v. Speed: for 8 finest
+    // siblings, group_cross (3 × 27 entries, axis × sub-lattice point of the edge's lower end relative to group_base)
+    // remembers the crossings the group has used, so the siblings sharing an edge look it up once.
+    auto place = [&](std::uint32_t li, const glm::ivec3 (&q)[8], const double (&v)[8], std::uint32_t* group_cross,
+                     glm::ivec3 group_base) {
         OctreeNode& nd = tree.nodes[li];
         nd.vertex = invalid_index;
         nd.signs = 0;
@@ -147,12 +151,22 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params) {
             const int a = e.a, c = e.c, d = e.d;
             // the radial edge on the polar axis appears twice (φ-lower and φ-upper corners): count it once
             if (spherical && a == 0 && (c & 4) && (q[c].y == 0 || q[c].y == n_res)) continue;
+            std::uint32_t* local = nullptr;
+            if (group_cross) {
+                const glm::ivec3 p = q[c] - group_base;
+                local = &group_cross[a * 27 + p.x + 3 * p.y + 9 * p.z];
+                if (*local != invalid_index) {
+                    qef.add(computed[*local].point, computed[*local].normal);
+                    continue;
+                }
+            }
             std::uint32_t* cached = nullptr;
             if (nd.level == tree.max_level) {
                 cached = merged_point(q[c]) ? &edge_crossing_into.slot(tree.canonical(q[d]))[a]
                                             : &edge_crossing.slot(tree.canonical(q[c]))[a];
                 if (*cached != invalid_index) {
                     qef.add(computed[*cached].point, computed[*cached].normal);
+                    if (local) *local = *cached;
                     continue;
                 }
             }
@@ -166,6 +180,7 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params) {
             ++crossings;
             if (cached) {
                 *cached = std::uint32_t(computed.size());
+                if (local) *local = *cached;
                 computed.push_back(x);
             }
         }
@@ -199,12 +214,14 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params) {
                      leaves[i + 7] == leaves[i] + 7;
         if (!group) {
             for (int c = 0; c < 8; ++c) q[c] = tree.corner(nd, c), v[c] = tree.value(q[c]);
-            place(leaves[i], q, v);
+            place(leaves[i], q, v, nullptr, {});
             continue;
         }
         const glm::ivec3 base = tree.corner(nd, 0);
         double sub[27];  // sub[l + 3 j + 9 k] = f(base + (l, j, k))
         tree.sub_lattice_values(base, sub);
+        std::uint32_t group_cross[3 * 27];
+        std::fill_n(group_cross, 3 * 27, invalid_index);
         for (int child = 0; child < 8; ++child) {
             const glm::ivec3 o(child & 1, (child >> 1) & 1, child >> 2);
             for (int c = 0; c < 8; ++c) {
@@ -212,7 +229,7 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params) {
                 q[c] = base + p;
                 v[c] = sub[p.x + 3 * p.y + 9 * p.z];
             }
-            place(leaves[i + child], q, v);
+            place(leaves[i + child], q, v, group_cross, base);
         }
         i += 7;
     }
@@ -328,9 +345,21 @@ PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles) {
     // holds their vertex (4 bytes a cell), so that the (large) node array is not read again for them.
     constexpr std::uint32_t not_finest = invalid_index, no_vertex = invalid_index - 1;
     BlockGrid<std::uint32_t> finest(not_finest, n_res);
-    for (std::uint32_t li : leaves) {
-        const OctreeNode& nd = tree.nodes[li];
-        if (nd.level == tree.max_level) finest.slot({nd.x, nd.y, nd.z}) = nd.vertex == invalid_index ? no_vertex : nd.vertex;
+    for (std::size_t i = 0; i < leaves.size(); ++i) {
+        const OctreeNode& nd = tree.nodes[leaves[i]];
+        if (nd.level != tree.max_level) continue;
+        // Speed: 8 finest siblings in a row (depth-first order) are 8 slots of one block
+        if (((nd.x | nd.y | nd.z) & 1) == 0 && i + 8 <= leaves.size() && leaves[i + 7] == leaves[i] + 7) {
+            std::uint32_t* slots = finest.block_of({nd.x, nd.y, nd.z});
+            for (int c = 0; c < 8; ++c) {
+                const OctreeNode& ch = tree.nodes[leaves[i] + c];
+                slots[BlockGrid<std::uint32_t>::index_in_block({ch.x, ch.y, ch.z})] =
+                    ch.vertex == invalid_index ? no_vertex : ch.vertex;
+            }
+            i += 7;
+            continue;
+        }
+        finest.slot({nd.x, nd.y, nd.z}) = nd.vertex == invalid_index ? no_vertex : nd.vertex;
     }
     auto find_leaf = [&](glm::ivec3 p2) {
         // p2 has odd coordinates: the finest cell containing it is p2 / 2 (φ wrapped)

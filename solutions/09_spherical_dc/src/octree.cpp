@@ -152,15 +152,22 @@ std::uint32_t Octree::locate(glm::ivec3 p2) const {
 }
 
 std::vector<std::uint32_t> Octree::leaves() const {
-    std::vector<std::uint32_t> out, stack{0};
+    std::vector<std::uint32_t> out;
     if (nodes.empty()) return out;
-    while (!stack.empty()) {
-        std::uint32_t n = stack.back();
-        stack.pop_back();
-        if (nodes[n].is_leaf()) {
+    out.reserve(nodes.size() - nodes.size() / 8);  // 7 of every 8 nodes are leaves once the tree is split
+    // depth first with an explicit stack: at most 7 pending siblings per level below the root
+    std::uint32_t stack[8 * 12];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+        const std::uint32_t n = stack[--top];
+        const std::uint32_t first = nodes[n].first_child;
+        if (first == invalid_index) {
             out.push_back(n);
         } else {
-            for (int c = 7; c >= 0; --c) stack.push_back(nodes[n].first_child + c);
+            if (top + 8 > int(sizeof stack / sizeof stack[0]))
+                throw std::logic_error("Octree::leaves: the tree is deeper than 11 levels");
+            for (int c = 7; c >= 0; --c) stack[top++] = first + std::uint32_t(c);
         }
     }
     return out;
