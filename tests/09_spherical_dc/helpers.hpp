@@ -591,6 +591,14 @@ inline ClosureReport closure_report(const Octree& t) {
     return r;
 }
 
+// CHECK that no leaf above max_level sits at a sign change (closure_report), naming the first that does.
+inline void check_closure(const Octree& t) {
+    const ClosureReport r = closure_report(t);
+    CHECK_MESSAGE(r.coarse_with_sign_change + r.coarse_around_edge == 0,
+                  r.coarse_with_sign_change << " coarse leaves with corners on both sides, " << r.coarse_around_edge
+                                            << " coarse leaves around sign-changing finest edges; first: " << r.first);
+}
+
 // The Cartesian box of a leaf.
 inline Box cell_box(const Octree& t, const OctreeNode& nd) {
     return {t.lattice_point(t.corner(nd, 0)), t.lattice_point(t.corner(nd, 7))};
