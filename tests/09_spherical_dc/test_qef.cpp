@@ -115,6 +115,52 @@ TEST_CASE("qef: rank 3 box corner is solved exactly" * geolab::points(1) *
     }
 }
 
+TEST_CASE("qef: cone tips: a sharp tip is kept (rank 3); a needle or a nearly flat tip is truncated" *
+          geolab::points(1) *
+          geolab::hint("The tangent planes around a cone's apex have eigenvalues k sin^2(g) along the axis and "
+                       "k cos^2(g)/2 across it (g the half-angle): tau = 0.01 keeps all three for g = 40 degrees (x "
+                       "is the apex), drops the axis for a needle (g = 3: x on the axis at the mass point's height) "
+                       "and drops both cross directions for a nearly flat tip (g = 87: x moves from the mass point "
+                       "along the axis only). Handout §1.")) {
+    const glm::dvec3 apex(0.3, -0.2, 0.5), u = glm::normalize(glm::dvec3(1, 2, 2));
+    const glm::dvec3 e1 = glm::normalize(glm::cross(u, glm::dvec3(1, 0, 0))), e2 = glm::cross(u, e1);
+    struct Case {
+        double degrees;
+        int rank;
+        double arc;  // the generators cover this fraction of the circle around the axis
+    } cases[] = {{40.0, 3, 1.0}, {3.0, 2, 1.0}, {87.0, 1, 0.5}};
+    for (const Case& cs : cases) {
+        const double g = cs.degrees * kPi / 180.0;
+        // 12 generators × 3 distances from the apex; n ⟂ the generator, pointing away from the axis. Every tangent
+        // plane contains the apex, so an untruncated solve always returns the apex.
+        Planes pl;
+        for (int i = 0; i < 12; ++i) {
+            const double phi = 2.0 * kPi * cs.arc * i / 12.0;
+            const glm::dvec3 radial = std::cos(phi) * e1 + std::sin(phi) * e2;
+            for (double t : {0.05, 0.1, 0.2})
+                pl.add(apex + t * (std::cos(g) * u + std::sin(g) * radial), -std::sin(g) * u + std::cos(g) * radial);
+        }
+        const Qef q = pl.qef();
+        int rank = -1;
+        glm::dvec3 m;
+        const glm::dvec3 x = q.solve(0.01, &m, &rank);
+        INFO("cone with half-angle " << cs.degrees << " degrees, apex " << str(apex) << ", axis " << str(u)
+                                     << ": solve returned " << str(x) << ", rank " << rank << ", mass point "
+                                     << str(m));
+        CHECK(rank == cs.rank);
+        if (cs.rank == 3) CHECK(glm::length(x - apex) < 1e-9);
+        if (cs.rank == 2) {
+            CHECK(std::abs(glm::dot(x - m, u)) < 1e-9);                                // keeps m's axis coordinate
+            CHECK(glm::length(x - (apex + glm::dot(m - apex, u) * u)) < 1e-9);        // on the axis
+        }
+        if (cs.rank == 1) {  // half a circle of generators: the mass point is off the axis, and so stays x
+            const glm::dvec3 off_axis = (m - apex) - glm::dot(m - apex, u) * u;
+            CHECK(glm::length(off_axis) > 0.05);
+            CHECK(glm::length(x - apex) > 0.5 * glm::length(off_axis));  // not pulled to the ill-determined apex
+        }
+    }
+}
+
 TEST_CASE("qef: error(x) equals the brute-force sum of squares; accumulated in double" * geolab::points(2) *
           geolab::hint("Q(x) = xT AtA x - 2 xT Atb + btb with every sum in double (float loses everything here: "
                        "the points are near 1e4 while Q is of order 1). Handout §2.1.")) {
