@@ -461,7 +461,13 @@ struct Cell {  // one (model, level, octree) of the table
     std::size_t origin_steps = 0;
     glm::dvec3 origin{0.0};  // spherical: the origin used
     double r_max = 0.0;      // spherical: the shell's outer radius
+    std::shared_ptr<const PolygonSoup> soup;  // spherical, at mechanism_level() only: the output, for the last section
 };
+
+//! The level at which the last section of Table 1 measures the surfaces: 6 if run, else the highest level run.
+int mechanism_level(const std::vector<int>& levels) {
+    return std::find(levels.begin(), levels.end(), 6) != levels.end() ? 6 : levels.back();
+}
 
 //! The mean number of sign changes of f along the radial columns of the level-L spherical lattice about `origin`
 //! (samples at r = r_max k / N, k = 0..N, N = 2^L, in the centre directions of the N × N (θ, φ) cells), over the
@@ -615,8 +621,7 @@ std::string machine() {
 std::string mechanism_section(const std::vector<int>& levels, const std::vector<std::string>& models,
                               const std::map<std::string, Input>& inputs,
                               std::map<std::string, std::map<int, std::array<Cell, 2>>>& results) {
-    // the level at which columns are counted: 6 if run, else the highest run
-    const int lc = std::find(levels.begin(), levels.end(), 6) != levels.end() ? 6 : levels.back();
+    const int lc = mechanism_level(levels);
     std::ostringstream md;
     md << "\n## Why CR is what it is: three measures tested against it\n\n"
        << "Each measure below is computed at level " << lc << " about the origin of the spherical run, for the "
@@ -647,11 +652,11 @@ std::string mechanism_section(const std::vector<int>& levels, const std::vector<
         const auto it = cells.find(lc);
         if (it == cells.end() || !it->second[1].run) return;
         const Cell& sph = it->second[1];
+        if (!sph.soup) return;
         const double per_column = radial_crossings_per_column(*in.field, sph.origin, sph.r_max, lc);
-        const Run r = run_dc(in, dc::Coordinates::spherical, lc, dc::PoleFill::normal_projection);
-        const double alignment = radial_alignment(r.soup, r.stats.origin);
+        const double alignment = radial_alignment(*sph.soup, sph.origin);
         const double side = dc::cartesian_domain(*in.field, default_cartesian.padding).second;
-        const ModelledCells mc = modelled_cells(r.soup, r.stats.origin, r.stats.r_max, side, lc);
+        const ModelledCells mc = modelled_cells(*sph.soup, sph.origin, sph.r_max, side, lc);
         const double modelled_cr = mc.spherical > 0 ? mc.cartesian / mc.spherical : 0.0;
         auto share = [&](int k) { return mc.spherical > 0 ? fmt("%.0f", 100.0 * mc.through[k] / mc.spherical) : "—"; };
         md << "| " << name << " | " << fmt("%.2f", per_column) << " | " << fmt("%.2f", alignment) << " | "
@@ -686,6 +691,7 @@ std::string mechanism_section(const std::vector<int>& levels, const std::vector<
                 c.vertices = r.soup.n_vertices();
                 c.origin = r.stats.origin;
                 c.r_max = r.stats.r_max;
+                if (o == 1 && level == lc) c.soup = std::make_shared<const PolygonSoup>(r.soup);
             }
         row(shape + " (analytic)", in, cells);
     }
@@ -789,6 +795,7 @@ int run_table1(const std::vector<int>& levels_in, const std::vector<std::string>
                     c.origin_steps = r.stats.origin_path.empty() ? 0 : r.stats.origin_path.size() - 1;
                     c.origin = r.stats.origin;
                     c.r_max = r.stats.r_max;
+                    if (o == 1 && level == mechanism_level(levels)) c.soup = std::make_shared<const PolygonSoup>(r.soup);
                     c.diagonal = mi.diagonal;
                     if (samples > 0)
                         c.h = hausdorff(input_samples[m], *in.mesh_field, r.soup, samples, seed + 7 * level + o);

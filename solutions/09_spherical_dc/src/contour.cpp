@@ -361,17 +361,6 @@ PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles) {
         }
         finest.slot({nd.x, nd.y, nd.z}) = nd.vertex == invalid_index ? no_vertex : nd.vertex;
     }
-    auto find_leaf = [&](glm::ivec3 p2) {
-        // p2 has odd coordinates: the finest cell containing it is p2 / 2 (φ wrapped)
-        glm::ivec3 cell(p2.x >> 1, p2.y >> 1, p2.z >> 1);
-        if (spherical) cell.z &= n_res - 1;
-        if (cell.x >= 0 && cell.y >= 0 && cell.z >= 0 && cell.x < n_res && cell.y < n_res && cell.z < n_res) {
-            const std::uint32_t v = finest.get(cell);
-            if (v != not_finest && v != no_vertex) return LeafRef{invalid_index, v, tree.max_level};
-        }
-        std::uint32_t l = tree.locate(p2);
-        return l == invalid_index ? LeafRef{} : leaf_ref(l);
-    };
     // the vertex of the finest leaf in finest cell `cell`, or invalid_index when that cell is not a finest leaf with
     // a vertex (or outside the domain)
     auto finest_vertex = [&](glm::ivec3 cell) {
@@ -380,6 +369,14 @@ PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles) {
             return invalid_index;
         const std::uint32_t v = finest.get(cell);
         return v == not_finest || v == no_vertex ? invalid_index : v;
+    };
+    auto find_leaf = [&](glm::ivec3 p2) {
+        // p2 has odd coordinates: the finest cell containing it is p2 / 2; a finest leaf without a vertex is looked up
+        // again by locate() so that the error names it
+        const std::uint32_t v = finest_vertex({p2.x >> 1, p2.y >> 1, p2.z >> 1});
+        if (v != invalid_index) return LeafRef{invalid_index, v, tree.max_level};
+        std::uint32_t l = tree.locate(p2);
+        return l == invalid_index ? LeafRef{} : leaf_ref(l);
     };
     auto emit_polygon = [&](const std::uint32_t* w, int m) {
         if (m == 3) {

@@ -108,7 +108,6 @@ void Octree::sub_lattice_values(glm::ivec3 base, double (&out)[27]) const {
     // Speed: per axis the offsets 0..2 fall into one block, or two (split where the block boundary falls); look each
     // block up once and index its slots directly.
     constexpr int b = BlockGrid<double>::B;
-    const double h = size / resolution();
     int split[3];  // offsets below split[a] are in the lower block along axis a
     for (int a = 0; a < 3; ++a) split[a] = std::min(3, b - (base[a] & (b - 1)));
     for (int bz = 0; bz < (split[2] < 3 ? 2 : 1); ++bz)
@@ -123,10 +122,7 @@ void Octree::sub_lattice_values(glm::ivec3 base, double (&out)[27]) const {
                         for (int i = i0; i < i1; ++i) {
                             const glm::ivec3 q(base.x + i, base.y + j, base.z + k);
                             double& v = slots[BlockGrid<double>::index_in_block(q)];
-                            if (v != v) {
-                                ++samples_;
-                                v = field->value(min_corner + h * glm::dvec3(q));  // = sample(q), Cartesian
-                            }
+                            if (v != v) v = sample(q);
                             out[i + 3 * j + 9 * k] = v;
                         }
             }
