@@ -1,6 +1,7 @@
 // Lab 09 — task 4: dual vertices, simplification and polygons; the Cartesian one-shot function.
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>

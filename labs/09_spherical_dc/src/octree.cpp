@@ -33,6 +33,7 @@ void Octree::init_cartesian(const ScalarField& f, int level, const glm::dvec3& l
     nodes.assign(1, OctreeNode{});
     vertices.clear();
     cache_ = BlockGrid<double>(std::numeric_limits<double>::quiet_NaN(), resolution() + 1);
+    even_cache_ = BlockGrid<double>(std::numeric_limits<double>::quiet_NaN(), resolution() / 2 + 1);
     samples_ = 0;
 }
 
@@ -51,6 +52,7 @@ void Octree::init_spherical(const ScalarField& f, int level, const glm::dvec3& o
     nodes.assign(1, OctreeNode{});
     vertices.clear();
     cache_ = BlockGrid<double>(std::numeric_limits<double>::quiet_NaN(), resolution() + 1);
+    even_cache_ = BlockGrid<double>(std::numeric_limits<double>::quiet_NaN(), resolution() / 2 + 1);
     samples_ = 0;
     const int n = resolution();
     sin_t_.resize(n + 1);
@@ -105,26 +107,32 @@ void Octree::sub_lattice_values(glm::ivec3 base, double (&out)[27]) const {
                 for (int i = 0; i < 3; ++i) out[i + 3 * j + 9 * k] = value(base + glm::ivec3(i, j, k));
         return;
     }
-    // Speed: per axis the offsets 0..2 fall into one block, or two (split where the block boundary falls); look each
-    // block up once and index its slots directly.
+    // Speed: the 8 points with all offsets even are the parent's corners, in even_cache_ (see cache_slot); along each
+    // axis the other offsets fall into one block of cache_ or two (split where the block boundary falls). Look each
+    // block up once, then read the slots through per-axis tables.
     constexpr int b = BlockGrid<double>::B;
-    int split[3];  // offsets below split[a] are in the lower block along axis a
-    for (int a = 0; a < 3; ++a) split[a] = std::min(3, b - (base[a] & (b - 1)));
-    for (int bz = 0; bz < (split[2] < 3 ? 2 : 1); ++bz)
-        for (int by = 0; by < (split[1] < 3 ? 2 : 1); ++by)
-            for (int bx = 0; bx < (split[0] < 3 ? 2 : 1); ++bx) {
-                const int i0 = bx ? split[0] : 0, j0 = by ? split[1] : 0, k0 = bz ? split[2] : 0;
-                const int i1 = bx || split[0] == 3 ? 3 : split[0], j1 = by || split[1] == 3 ? 3 : split[1],
-                          k1 = bz || split[2] == 3 ? 3 : split[2];
-                double* slots = cache_.block_of(base + glm::ivec3(i0, j0, k0));
-                for (int k = k0; k < k1; ++k)
-                    for (int j = j0; j < j1; ++j)
-                        for (int i = i0; i < i1; ++i) {
-                            const glm::ivec3 q(base.x + i, base.y + j, base.z + k);
-                            double& v = slots[BlockGrid<double>::index_in_block(q)];
-                            if (v != v) v = sample(q);
-                            out[i + 3 * j + 9 * k] = v;
-                        }
+    int block_step[3][3], local[3][3];  // offset o along axis a: in the lower (0) or upper (1) block, local coordinate
+    for (int a = 0; a < 3; ++a)
+        for (int o = 0; o < 3; ++o) {
+            const int l = (base[a] & (b - 1)) + o;
+            block_step[a][o] = l >= b;
+            local[a][o] = l & (b - 1);
+        }
+    double* blocks[2][2][2] = {};
+    for (int k = 0; k < 3; ++k)
+        for (int j = 0; j < 3; ++j)
+            for (int i = 0; i < 3; ++i) {
+                const glm::ivec3 q = base + glm::ivec3(i, j, k);
+                double* v;
+                if (((q.x | q.y | q.z) & 1) == 0) {
+                    v = &even_cache_.slot(glm::ivec3(q.x >> 1, q.y >> 1, q.z >> 1));
+                } else {
+                    double*& slots = blocks[block_step[2][k]][block_step[1][j]][block_step[0][i]];
+                    if (!slots) slots = cache_.block_of(q);
+                    v = &slots[local[0][i] + b * (local[1][j] + b * local[2][k])];
+                }
+                if (*v != *v) *v = sample(q);
+                out[i + 3 * j + 9 * k] = *v;
             }
 }
 
@@ -188,9 +196,9 @@ std::uint32_t Octree::split(std::uint32_t n) {
     const OctreeNode parent = nodes[n];
     for (int c = 0; c < 8; ++c) {
         OctreeNode ch;
-        ch.x = 2 * parent.x + (c & 1);
-        ch.y = 2 * parent.y + ((c >> 1) & 1);
-        ch.z = 2 * parent.z + ((c >> 2) & 1);
+        ch.x = std::uint16_t(2 * parent.x + (c & 1));
+        ch.y = std::uint16_t(2 * parent.y + ((c >> 1) & 1));
+        ch.z = std::uint16_t(2 * parent.z + ((c >> 2) & 1));
         ch.level = std::uint8_t(parent.level + 1);
         nodes.push_back(ch);
     }

@@ -1,6 +1,7 @@
 // Lab 09 — task 4: dual vertices, simplification and polygons; the Cartesian one-shot function.
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
@@ -71,6 +72,11 @@ struct SimplifyTables {
     int point[8][8] = {};
     bool single_sheet[256] = {};
     int feature[27] = {};
+    // spread[child][signs]: the child's sign configuration as bits of the sub-lattice (bit point[child][c] for corner c)
+    std::uint32_t spread[8][256] = {};
+    // for the parent's corner signs m: the sub-lattice points allowed to be inside (a corner inside, or a feature with
+    // an inside corner) and those allowed to be outside
+    std::uint32_t may_be_inside[256] = {}, may_be_outside[256] = {};
 };
 constexpr bool corners_connected(int mask) {
     if (mask == 0) return true;
@@ -103,9 +109,37 @@ constexpr SimplifyTables make_simplify_tables() {
             if (on) t.feature[p] |= 1 << c;
         }
     }
+    for (int child = 0; child < 8; ++child)
+        for (int signs = 0; signs < 256; ++signs)
+            for (int c = 0; c < 8; ++c)
+                if ((signs >> c) & 1) t.spread[child][signs] |= 1u << t.point[child][c];
+    for (int m = 0; m < 256; ++m)
+        for (int p = 0; p < 27; ++p) {
+            // a corner of the parent (coordinates 0 or 2) is its own feature
+            const int corner = (p % 3) / 2 + 2 * (((p / 3) % 3) / 2) + 4 * ((p / 9) / 2);
+            const int corners = t.feature[p] ? t.feature[p] : 1 << corner;
+            if (corners & m) t.may_be_inside[m] |= 1u << p;
+            if (corners & ~m & 0xff) t.may_be_outside[m] |= 1u << p;
+        }
     return t;
 }
 constexpr SimplifyTables simplify_tables = make_simplify_tables();
+// The 3×3×3 sub-lattice of a parent cell (its 8 children's corners) as bit sets, bit p = i + 3j + 9k. edge_starts[a]:
+// the points from which an edge along axis a leaves (coordinate a is 0 or 1); interior_edges[a]: those whose edge
+// lies inside the parent (the other two coordinates are 1), shared by no other parent.
+constexpr std::uint32_t all_sub_points = (1u << 27) - 1;
+constexpr std::array<std::uint32_t, 3> sub_lattice_sets(bool interior) {
+    std::array<std::uint32_t, 3> out{};
+    for (int a = 0; a < 3; ++a)
+        for (int p = 0; p < 27; ++p) {
+            const int ijk[3] = {p % 3, (p / 3) % 3, p / 9};
+            if (ijk[a] == 2) continue;
+            if (interior && (ijk[(a + 1) % 3] != 1 || ijk[(a + 2) % 3] != 1)) continue;
+            out[a] |= 1u << p;
+        }
+    return out;
+}
+constexpr std::array<std::uint32_t, 3> edge_starts = sub_lattice_sets(false), interior_edges = sub_lattice_sets(true);
 }  // namespace
 // END SOLUTION
 
@@ -127,70 +161,36 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params) {
     auto merged_point = [&](glm::ivec3 q) {
         return spherical && (q.y == 0 || q.y == n_res || (q.x == 0 && tree.r_min == 0.0));
     };
-    std::vector<Crossing> computed;
+    std::vector<Crossing> computed;  // the crossings of finest edges, by the index the grids hold
     // Speed: in the conservative band about half the leaves are cut by the surface, each with about one new crossing;
     // reserving that much avoids most copies of these large arrays while they grow.
     tree.vertices.reserve(leaves.size() / 2);
     computed.reserve(leaves.size() / 2);
-    // Hermite data and vertex of leaf li, given its corner lattice points q and samples v
-    // Hermite data and vertex of leaf li, given its corner lattice points q and samples v. Speed: for 8 finest
-    // siblings, group_cross (3 × 27 entries, axis × sub-lattice point of the edge's lower end relative to group_base)
-    // remembers the crossings the group has used, so the siblings sharing an edge look it up once.
-    auto place = [&](std::uint32_t li, const glm::ivec3 (&q)[8], const double (&v)[8], std::uint32_t* group_cross,
-                     glm::ivec3 group_base) {
-        OctreeNode& nd = tree.nodes[li];
-        nd.vertex = invalid_index;
-        nd.signs = 0;
-        for (int c = 0; c < 8; ++c) nd.signs |= std::uint8_t(inside(v[c]) << c);
-        if (nd.signs == 0 || nd.signs == 0xff) return;
-        // Hermite data on the 12 edges: corner c → c | (1 << a) for the corners c with bit a clear
-        Qef qef;
-        const EdgeList& changing = changing_edges[nd.signs];
-        for (int ei = 0; ei < changing.n; ++ei) {
-            const CellEdge& e = cell_edges[changing.e[ei]];
-            const int a = e.a, c = e.c, d = e.d;
-            // the radial edge on the polar axis appears twice (φ-lower and φ-upper corners): count it once
-            if (spherical && a == 0 && (c & 4) && (q[c].y == 0 || q[c].y == n_res)) continue;
-            std::uint32_t* local = nullptr;
-            if (group_cross) {
-                const glm::ivec3 p = q[c] - group_base;
-                local = &group_cross[a * 27 + p.x + 3 * p.y + 9 * p.z];
-                if (*local != invalid_index) {
-                    qef.add(computed[*local].point, computed[*local].normal);
-                    continue;
-                }
-            }
-            std::uint32_t* cached = nullptr;
-            if (nd.level == tree.max_level) {
-                cached = merged_point(q[c]) ? &edge_crossing_into.slot(tree.canonical(q[d]))[a]
-                                            : &edge_crossing.slot(tree.canonical(q[c]))[a];
-                if (*cached != invalid_index) {
-                    qef.add(computed[*cached].point, computed[*cached].normal);
-                    if (local) *local = *cached;
-                    continue;
-                }
-            }
-            Crossing x = spherical ? find_crossing_arc(*tree.field, tree.origin, tree.lattice_spherical(q[c]),
-                                                       tree.lattice_spherical(q[d]), v[c], v[d],
-                                                       params.crossing_tolerance)
-                                   : find_crossing(*tree.field, tree.lattice_point(q[c]),
-                                                   tree.lattice_point(q[d]), v[c], v[d],
-                                                   params.crossing_tolerance);
-            qef.add(x.point, x.normal);
-            ++crossings;
-            if (cached) {
-                *cached = std::uint32_t(computed.size());
-                if (local) *local = *cached;
-                computed.push_back(x);
-            }
+    // the crossing on the edge from lattice point qc (value vc) to qd = qc + e_a (value vd)
+    auto compute = [&](glm::ivec3 qc, glm::ivec3 qd, double vc, double vd) {
+        ++crossings;
+        return spherical ? find_crossing_arc(*tree.field, tree.origin, tree.lattice_spherical(qc),
+                                             tree.lattice_spherical(qd), vc, vd, params.crossing_tolerance)
+                         : find_crossing(*tree.field, tree.lattice_point(qc), tree.lattice_point(qd), vc, vd,
+                                         params.crossing_tolerance);
+    };
+    // the same for a finest edge, computed once: its index in `computed`
+    auto finest_crossing = [&](glm::ivec3 qc, glm::ivec3 qd, int a, double vc, double vd) {
+        std::uint32_t& slot = merged_point(qc) ? edge_crossing_into.slot(tree.canonical(qd))[a]
+                                               : edge_crossing.slot(tree.canonical(qc))[a];
+        if (slot == invalid_index) {
+            slot = std::uint32_t(computed.size());
+            computed.push_back(compute(qc, qd, vc, vd));
         }
-        if (qef.count == 0) return;  // only degenerate edges changed sign (cannot happen with canonical samples)
+        return slot;
+    };
+    // the QEF's minimiser kept in the cell with corners q0 (lowest) and q7 (highest) becomes leaf li's vertex
+    auto add_vertex = [&](std::uint32_t li, const Qef& qef, glm::ivec3 q0, glm::ivec3 q7) {
         glm::dvec3 x = qef.solve(params.tau);
-        // keep the vertex in its cell
         if (!spherical) {
-            x = glm::clamp(x, tree.lattice_point(q[0]), tree.lattice_point(q[7]));
+            x = glm::clamp(x, tree.lattice_point(q0), tree.lattice_point(q7));
         } else {
-            Spherical lo = tree.lattice_spherical(q[0]), hi = tree.lattice_spherical(q[7]);
+            Spherical lo = tree.lattice_spherical(q0), hi = tree.lattice_spherical(q7);
             Spherical s = to_spherical(x - tree.origin);
             s.r = std::clamp(s.r, lo.r, hi.r);
             s.theta = std::clamp(s.theta, lo.theta, hi.theta);
@@ -200,36 +200,82 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params) {
             s.phi = lo.phi + d;
             x = tree.spherical_point(s);
         }
-        nd.vertex = std::uint32_t(tree.vertices.size());
+        tree.nodes[li].vertex = std::uint32_t(tree.vertices.size());
         tree.vertices.push_back({x, qef});
     };
+    // the radial edge on the polar axis appears twice in a cell there (φ-lower and φ-upper corners): count it once
+    auto repeated_axis_edge = [&](const CellEdge& e, glm::ivec3 qc) {
+        return spherical && e.a == 0 && (e.c & 4) && (qc.y == 0 || qc.y == n_res);
+    };
     for (std::size_t i = 0; i < leaves.size(); ++i) {
-        const OctreeNode& nd = tree.nodes[leaves[i]];
-        glm::ivec3 q[8];
-        double v[8];
-        // Speed: finest leaves come as 8 siblings in a row (depth-first order); their 8 × 8 corners are the 27
-        // points of the parent's 3×3×3 sub-lattice. Look those up once, block by block (Octree::sub_lattice_values),
-        // not 64 times one by one.
-        bool group = nd.level == tree.max_level && ((nd.x | nd.y | nd.z) & 1) == 0 && i + 8 <= leaves.size() &&
-                     leaves[i + 7] == leaves[i] + 7;
-        if (!group) {
-            for (int c = 0; c < 8; ++c) q[c] = tree.corner(nd, c), v[c] = tree.value(q[c]);
-            place(leaves[i], q, v, nullptr, {});
+        OctreeNode& nd = tree.nodes[leaves[i]];
+        if (nd.level != tree.max_level) {
+            // a coarser leaf: its edges are not finest edges, nothing to share
+            glm::ivec3 q[8];
+            double v[8];
+            nd.vertex = invalid_index;
+            nd.signs = 0;
+            for (int c = 0; c < 8; ++c) {
+                q[c] = tree.corner(nd, c), v[c] = tree.value(q[c]);
+                nd.signs |= std::uint8_t(inside(v[c]) << c);
+            }
+            const EdgeList& changing = changing_edges[nd.signs];
+            Qef qef;
+            for (int ei = 0; ei < changing.n; ++ei) {
+                const CellEdge& e = cell_edges[changing.e[ei]];
+                if (repeated_axis_edge(e, q[e.c])) continue;
+                const Crossing x = compute(q[e.c], q[e.d], v[e.c], v[e.d]);
+                qef.add(x.point, x.normal);
+            }
+            if (qef.count > 0) add_vertex(leaves[i], qef, q[0], q[7]);
             continue;
         }
+        // Finest leaves come as 8 siblings in a row (depth-first order): their 8 × 8 corners are the 27 points of
+        // the parent's 3×3×3 sub-lattice, p = i + 3j + 9k, and their 8 × 12 edges are 54 edges of it. Speed: look
+        // the samples up once (Octree::sub_lattice_values), find the sign-changing edges of the whole group with bit
+        // operations, and get each of those crossings once for the 8 leaves.
         const glm::ivec3 base = tree.corner(nd, 0);
-        double sub[27];  // sub[l + 3 j + 9 k] = f(base + (l, j, k))
+        double sub[27];
         tree.sub_lattice_values(base, sub);
-        std::uint32_t group_cross[3 * 27];
-        std::fill_n(group_cross, 3 * 27, invalid_index);
-        for (int child = 0; child < 8; ++child) {
-            const glm::ivec3 o(child & 1, (child >> 1) & 1, child >> 2);
-            for (int c = 0; c < 8; ++c) {
-                const glm::ivec3 p = o + glm::ivec3(c & 1, (c >> 1) & 1, c >> 2);
-                q[c] = base + p;
-                v[c] = sub[p.x + 3 * p.y + 9 * p.z];
+        std::uint32_t in = 0;  // bit p: sub-lattice point p is inside
+        for (int p = 0; p < 27; ++p) in |= std::uint32_t(inside(sub[p])) << p;
+        std::uint32_t index[3 * 27];  // the crossing of the group's edge from point p along axis a: index[27 a + p]
+        if (in != 0 && in != all_sub_points) {
+            for (int a = 0; a < 3; ++a) {
+                const int stride = a == 0 ? 1 : a == 1 ? 3 : 9;
+                for (std::uint32_t m = (in ^ (in >> stride)) & edge_starts[a]; m; m &= m - 1) {
+                    const int p = std::countr_zero(m);
+                    const glm::ivec3 qc = base + glm::ivec3(p % 3, (p / 3) % 3, p / 9);
+                    glm::ivec3 qd = qc;
+                    qd[a] += 1;
+                    // an edge inside the parent cell belongs to no other group: no need to file it
+                    if ((interior_edges[a] >> p) & 1u) {
+                        index[27 * a + p] = std::uint32_t(computed.size());
+                        computed.push_back(compute(qc, qd, sub[p], sub[p + stride]));
+                    } else {
+                        index[27 * a + p] = finest_crossing(qc, qd, a, sub[p], sub[p + stride]);
+                    }
+                }
             }
-            place(leaves[i + child], q, v, group_cross, base);
+        }
+        for (int child = 0; child < 8; ++child) {
+            OctreeNode& ch = tree.nodes[leaves[i + child]];
+            const int offset = (child & 1) + 3 * ((child >> 1) & 1) + 9 * (child >> 2);
+            const std::uint32_t s = in >> offset;  // the child's corners are the bits 0, 1, 3, 4, 9, 10, 12, 13 of s
+            ch.signs = std::uint8_t((s & 0x3u) | ((s >> 1) & 0xcu) | ((s >> 5) & 0x30u) | ((s >> 6) & 0xc0u));
+            ch.vertex = invalid_index;
+            if (ch.signs == 0 || ch.signs == 0xff) continue;
+            const EdgeList& changing = changing_edges[ch.signs];
+            Qef qef;
+            for (int ei = 0; ei < changing.n; ++ei) {
+                const CellEdge& e = cell_edges[changing.e[ei]];
+                const int p = simplify_tables.point[child][e.c];
+                if (spherical && repeated_axis_edge(e, base + glm::ivec3(p % 3, (p / 3) % 3, p / 9))) continue;
+                const Crossing& x = computed[index[27 * e.a + p]];
+                qef.add(x.point, x.normal);
+            }
+            const glm::ivec3 q0 = base + glm::ivec3(child & 1, (child >> 1) & 1, child >> 2);
+            if (qef.count > 0) add_vertex(leaves[i + child], qef, q0, q0 + 1);
         }
         i += 7;
     }
@@ -254,23 +300,17 @@ std::size_t simplify(Octree& tree, double tolerance, double tau) {
         // the signs at the 27 sub-lattice points (bit i + 3j + 9k): the children's corners, which place_vertices
         // recorded in their sign configurations
         std::uint32_t sub = 0;
-        for (int child = 0; child < 8; ++child) {
-            const unsigned signs = tree.nodes[nd.first_child + child].signs;
-            for (int c = 0; c < 8; ++c) sub |= ((signs >> c) & 1u) << simplify_tables.point[child][c];
-        }
+        for (int child = 0; child < 8; ++child)
+            sub |= simplify_tables.spread[child][tree.nodes[nd.first_child + child].signs];
         // (1) the parent's corner signs form one sheet
         int in_mask = 0;
         for (int c = 0; c < 8; ++c) in_mask |= int((sub >> simplify_tables.point[c][c]) & 1u) << c;
         if (!simplify_tables.single_sheet[in_mask]) continue;
         // (2) every sub-lattice point that is the centre of an edge, face or the cell agrees with one of that
         //     feature's corners
-        bool safe = true;
-        for (int p = 0; p < 27 && safe; ++p) {
-            const int corners = simplify_tables.feature[p];
-            if (corners == 0) continue;  // a corner of the parent
-            safe = (((sub >> p) & 1u) ? in_mask : ~in_mask) & corners;
-        }
-        if (!safe) continue;
+        if ((sub & ~simplify_tables.may_be_inside[in_mask]) ||
+            (~sub & all_sub_points & ~simplify_tables.may_be_outside[in_mask]))
+            continue;
         // (3) the merged QEF fits well and its minimiser lies in the cell
         Qef merged;
         for (int c = 0; c < 8; ++c) {
@@ -383,7 +423,8 @@ PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles) {
             soup.add_face({w[0], w[1], w[2]});
         } else {  // split along the shorter diagonal
             const auto& P = soup.positions;
-            if (glm::distance(P[w[0]], P[w[2]]) <= glm::distance(P[w[1]], P[w[3]])) {
+            const glm::dvec3 d02 = P[w[2]] - P[w[0]], d13 = P[w[3]] - P[w[1]];
+            if (glm::dot(d02, d02) <= glm::dot(d13, d13)) {
                 soup.add_face({w[0], w[1], w[2]});
                 soup.add_face({w[0], w[2], w[3]});
             } else {
@@ -508,7 +549,8 @@ PolygonSoup dual_contour_cartesian(const ScalarField& f, const CartesianParams& 
     PolygonSoup soup = contour(tree);
     if (stats) {
         *stats = DcStats{};
-        stats->cells = tree.reachable_nodes();
+        // build_octree makes only reachable nodes, and each collapse detaches 8 (Speed: no traversal)
+        stats->cells = tree.nodes.size() - 8 * collapses;
         stats->leaves = stats->cells - (stats->cells - 1) / 8;  // every inner node has 8 children: 7 I + 1 leaves
         stats->samples = tree.samples();
         stats->crossings = crossings;

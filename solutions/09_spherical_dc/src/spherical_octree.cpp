@@ -53,7 +53,11 @@ Octree build_spherical_octree(const ScalarField& f, int max_level, const glm::dv
         double r_lo = tree.lattice_spherical(lo).r, r_hi = tree.lattice_spherical(lo + s).r;
         double rc = 0.5 * (r_lo + r_hi), radius = 0.0;
         for (double r : {r_lo, r_hi}) radius = std::max(radius, std::sqrt(std::max(0.0, r * r + rc * rc - 2.0 * r * rc * cos_max)));
-        if (std::abs(tree.value(mid)) <= lf * radius * (1.0 + 1e-12)) tree.split(n);
+        const double v = tree.sample(mid);  // cached only when the cell splits (as in build_octree)
+        if (std::abs(v) <= lf * radius * (1.0 + 1e-12)) {
+            tree.store(mid, v);
+            tree.split(n);
+        }
     }
     tree.refine_around_sign_changes();  // a guarantee where the test alone is none (estimated Lf, sign jumps)
     return tree;

@@ -157,17 +157,18 @@ enum class Coordinates : std::uint8_t { cartesian, spherical };
 //! One octree node. Children of node n are nodes[n.first_child + c], c = cx + 2 cy + 4 cz (cx, cy, cz ∈ {0,1} the
 //! lower/upper half of each axis), so the child cell index is 2 · (x, y, z) + (cx, cy, cz).
 struct OctreeNode {
-    std::uint32_t x = 0, y = 0, z = 0;             //!< cell index at `level` (spherical: r, θ, φ)
-    std::uint32_t first_child = invalid_index;     //!< invalid_index for a leaf
-    std::uint32_t vertex = invalid_index;          //!< index into Octree::vertices (leaves with a dual vertex)
+    std::uint16_t x = 0, y = 0, z = 0;             //!< cell index at `level` (spherical: r, θ, φ); < 2^10
     std::uint8_t level = 0;
     //! The sign configuration of a leaf (Ju et al. keep it per leaf): bit c set when corner c is inside, i.e.
     //! inside(value(corner(n, c))). Written by place_vertices for every leaf and by simplify for the leaves it
     //! makes, so that simplify and contour need not look the samples up again.
     std::uint8_t signs = 0;
+    std::uint32_t first_child = invalid_index;     //!< invalid_index for a leaf
+    std::uint32_t vertex = invalid_index;          //!< index into Octree::vertices (leaves with a dual vertex)
     bool is_leaf() const { return first_child == invalid_index; }
     bool corner_inside(int c) const { return (signs >> c) & 1; }
 };
+static_assert(sizeof(OctreeNode) == 16, "an octree node is 16 bytes: 16-bit cell indices (levels <= 10)");
 
 //! A dual vertex: its position and the QEF it minimises (kept for simplification and for tests).
 struct DualVertex {
@@ -195,20 +196,20 @@ public:
     //! The slot of lattice point q; `empty` until written.
     T& slot(glm::ivec3 q) {
         const std::uint64_t key = block_key(q);
-        if (key != last_key_) find_block(key, true);
-        return block(last_id_)[local(q)];
+        if (key != last_.key) find_block(key, true);
+        return last_.block[local(q)];
     }
     //! The value at q, or `empty` (does not create blocks).
     T get(glm::ivec3 q) const {
         const std::uint64_t key = block_key(q);
-        if (key != last_key_ && !find_block(key, false)) return empty_;
-        return block(last_id_)[local(q)];
+        if (key != last_.key && !find_block(key, false)) return empty_;
+        return last_.block[local(q)];
     }
     //! The B³ slots of the block holding q (created if needed), to be indexed by index_in_block.
     T* block_of(glm::ivec3 q) {
         const std::uint64_t key = block_key(q);
-        if (key != last_key_) find_block(key, true);
-        return block(last_id_);
+        if (key != last_.key) find_block(key, true);
+        return last_.block;
     }
     //! The index of q's slot within its block.
     static std::size_t index_in_block(glm::ivec3 q) { return local(q); }
@@ -218,7 +219,7 @@ public:
         dense_ = Directory(nb_ * nb_ * nb_);
         chunks_.clear();
         blocks_ = 0;
-        last_key_ = ~std::uint64_t(0);
+        last_.key = ~std::uint64_t(0);
     }
 
 private:
@@ -289,8 +290,8 @@ private:
             *id = std::uint32_t(++blocks_);  // ids are stored + 1: 0 means no block
             chunks_.back().resize(chunks_.back().size() + block_size, empty_);  // within the reserve: no move
         }
-        last_key_ = key;
-        last_id_ = *id - 1;
+        last_.key = key;
+        last_.block = block(*id - 1);
         return true;
     }
     void grow() const {
@@ -315,8 +316,20 @@ private:
     mutable std::vector<std::uint32_t> ids_;  // block id + 1 per hash slot
     mutable std::vector<std::vector<T>> chunks_;
     mutable std::size_t blocks_ = 0;
-    mutable std::uint64_t last_key_ = ~std::uint64_t(0);
-    mutable std::uint32_t last_id_ = 0;
+    // the block used last (get() and slot() memoise it); a copy starts without, so that it never points into the
+    // blocks of the grid it was copied from
+    struct Memo {
+        std::uint64_t key = ~std::uint64_t(0);
+        T* block = nullptr;
+        Memo() = default;
+        Memo(const Memo&) {}
+        Memo& operator=(const Memo&) {
+            key = ~std::uint64_t(0);
+            block = nullptr;
+            return *this;
+        }
+    };
+    mutable Memo last_;
 };
 
 //! An octree over a cube (Cartesian) or a spherical shell (r ∈ [r_min, r_max], θ ∈ [0, π], φ ∈ [0, 2π)), with
@@ -370,10 +383,16 @@ public:
     }
     //! f at a lattice point, evaluated once and cached under canonical(q) (the cache is mutable: not thread-safe).
     double value(glm::ivec3 q) const {
-        double& v = cache_.slot(canonical(q));
+        double& v = cache_slot(canonical(q));
         if (v != v) v = sample(q);  // NaN: not sampled yet
         return v;
     }
+    //! f at lattice point q, evaluated now and NOT cached (counted in samples()). For a point that is likely needed
+    //! once, such as the centre tested by the refinement of a cell that may stay a leaf: caching it would cost a
+    //! cache block for one value. Hand the value to store() if it turns out to be needed again.
+    double sample(glm::ivec3 q) const;
+    //! Put v = f(q) into the cache, as value(q) would have (v must be what sample(q) returned).
+    void store(glm::ivec3 q, double v) { cache_slot(canonical(q)) = v; }
     //! The samples at the 27 points base + (i, j, k), i, j, k ∈ {0, 1, 2}, into out[i + 3j + 9k]: value() of each,
     //! fetched block by block (the 8 finest children of one parent have these 27 corners).
     void sub_lattice_values(glm::ivec3 base, double (&out)[27]) const;
@@ -405,9 +424,16 @@ public:
     std::size_t refine_around_sign_changes();
 
 private:
+    // The samples, in two grids: points with all coordinates even (the lattice of level L − 1, where the corners of
+    // every coarser leaf lie) in even_cache_ at q / 2; the others, which only finest leaves use, in cache_. Coarse
+    // leaves are sparse: sharing blocks with the finest band, each of their corners would take a block of its own.
     mutable BlockGrid<double> cache_{std::numeric_limits<double>::quiet_NaN()};
+    mutable BlockGrid<double> even_cache_{std::numeric_limits<double>::quiet_NaN()};
+    double& cache_slot(glm::ivec3 qc) const {  // qc canonical
+        if ((qc.x | qc.y | qc.z) & 1) return cache_.slot(qc);
+        return even_cache_.slot(glm::ivec3(qc.x >> 1, qc.y >> 1, qc.z >> 1));
+    }
     mutable std::size_t samples_ = 0;
-    double sample(glm::ivec3 q) const;  // f(lattice_point(q)), counted
     glm::dvec3 spherical_lattice_point(glm::ivec3 q) const;
     std::vector<double> sin_t_, cos_t_, sin_p_, cos_p_;  // spherical lattice tables, N + 1 entries each
 };
@@ -435,8 +461,9 @@ std::pair<glm::dvec3, double> cartesian_domain(const ScalarField& f, double padd
 //! Task: build the Cartesian octree to `params.max_level` over cartesian_domain(f, params.padding).
 //! Refine a cell of level l < L when it may contain the surface by the CONSERVATIVE test
 //!   |f(center)| ≤ Lf · (half diagonal of the cell),   Lf = f.lipschitz(),
-//! (the centre is a lattice point, sample it with Octree::value). When lipschitz() == 0, Lf is estimated once as
-//! 2 × the largest |∇f| at the 9³ lattice of the domain (a heuristic, not a guarantee — documented in the handout).
+//! (the centre is a lattice point: Octree::value, or Octree::sample and store() to cache it only when the cell
+//! splits). When lipschitz() == 0, Lf is estimated once as 2 × the largest |∇f| at the 9³ lattice of the domain
+//! (a heuristic, not a guarantee — documented in the handout).
 //! Leaves at level L are not tested (their corners decide). Finish with tree.refine_around_sign_changes() (given):
 //! the test is no guarantee for an estimated Lf or a field whose sign jumps (handout §2).
 //! \throw std::invalid_argument for a bad level/bounds.
