@@ -149,7 +149,6 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params) {
     const bool spherical = tree.coordinates == Coordinates::spherical;
     const std::int32_t n_res = tree.resolution();
     std::size_t crossings = 0;
-    const std::vector<std::uint32_t> leaves = tree.leaves();
     // finest edges are shared by 4 leaves: compute each crossing once. An edge is filed under its lower end (3 slots:
     // the edges along +x, +y, +z), as canonical() names it. Spherical trees: canonical() merges the lattice points
     // on the polar axis (all φ) and, when r_min = 0, at the origin, so the θ-edges leaving a pole or the radial edges
@@ -163,9 +162,10 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params) {
     };
     std::vector<Crossing> computed;  // the crossings of finest edges, by the index the grids hold
     // Speed: in the conservative band about half the leaves are cut by the surface, each with about one new crossing;
-    // reserving that much avoids most copies of these large arrays while they grow.
-    tree.vertices.reserve(leaves.size() / 2);
-    computed.reserve(leaves.size() / 2);
+    // reserving that much avoids most copies of these large arrays while they grow (7 of 8 nodes are leaves).
+    const std::size_t leaves_estimate = tree.nodes.size() - tree.nodes.size() / 8;
+    tree.vertices.reserve(leaves_estimate / 2);
+    computed.reserve(leaves_estimate / 2);
     // the crossing on the edge from lattice point qc (value vc) to qd = qc + e_a (value vd)
     auto compute = [&](glm::ivec3 qc, glm::ivec3 qd, double vc, double vd) {
         ++crossings;
@@ -207,34 +207,33 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params) {
     auto repeated_axis_edge = [&](const CellEdge& e, glm::ivec3 qc) {
         return spherical && e.a == 0 && (e.c & 4) && (qc.y == 0 || qc.y == n_res);
     };
-    for (std::size_t i = 0; i < leaves.size(); ++i) {
-        OctreeNode& nd = tree.nodes[leaves[i]];
-        if (nd.level != tree.max_level) {
-            // a coarser leaf: its edges are not finest edges, nothing to share
-            glm::ivec3 q[8];
-            double v[8];
-            nd.vertex = invalid_index;
-            nd.signs = 0;
-            for (int c = 0; c < 8; ++c) {
-                q[c] = tree.corner(nd, c), v[c] = tree.value(q[c]);
-                nd.signs |= std::uint8_t(inside(v[c]) << c);
-            }
-            const EdgeList& changing = changing_edges[nd.signs];
-            Qef qef;
-            for (int ei = 0; ei < changing.n; ++ei) {
-                const CellEdge& e = cell_edges[changing.e[ei]];
-                if (repeated_axis_edge(e, q[e.c])) continue;
-                const Crossing x = compute(q[e.c], q[e.d], v[e.c], v[e.d]);
-                qef.add(x.point, x.normal);
-            }
-            if (qef.count > 0) add_vertex(leaves[i], qef, q[0], q[7]);
-            continue;
+    // a leaf coarser than the finest level: its edges are not finest edges, nothing to share
+    auto coarse_leaf = [&](std::uint32_t li) {
+        OctreeNode& nd = tree.nodes[li];
+        glm::ivec3 q[8];
+        double v[8];
+        nd.vertex = invalid_index;
+        nd.signs = 0;
+        for (int c = 0; c < 8; ++c) {
+            q[c] = tree.corner(nd, c), v[c] = tree.value(q[c]);
+            nd.signs |= std::uint8_t(inside(v[c]) << c);
         }
-        // Finest leaves come as 8 siblings in a row (depth-first order): their 8 × 8 corners are the 27 points of
-        // the parent's 3×3×3 sub-lattice, p = i + 3j + 9k, and their 8 × 12 edges are 54 edges of it. Speed: look
-        // the samples up once (Octree::sub_lattice_values), find the sign-changing edges of the whole group with bit
-        // operations, and get each of those crossings once for the 8 leaves.
-        const glm::ivec3 base = tree.corner(nd, 0);
+        const EdgeList& changing = changing_edges[nd.signs];
+        Qef qef;
+        for (int ei = 0; ei < changing.n; ++ei) {
+            const CellEdge& e = cell_edges[changing.e[ei]];
+            if (repeated_axis_edge(e, q[e.c])) continue;
+            const Crossing x = compute(q[e.c], q[e.d], v[e.c], v[e.d]);
+            qef.add(x.point, x.normal);
+        }
+        if (qef.count > 0) add_vertex(li, qef, q[0], q[7]);
+    };
+    // Finest leaves come as the 8 children of a node of level L − 1: their 8 × 8 corners are the 27 points of the
+    // parent's 3×3×3 sub-lattice, p = i + 3j + 9k, and their 8 × 12 edges are 54 edges of it. Speed: look the
+    // samples up once (Octree::sub_lattice_values), find the sign-changing edges of the whole group with bit
+    // operations, and get each of those crossings once for the 8 leaves.
+    auto finest_group = [&](std::uint32_t first) {
+        const glm::ivec3 base = tree.corner(tree.nodes[first], 0);
         double sub[27];
         tree.sub_lattice_values(base, sub);
         std::uint32_t in = 0;  // bit p: sub-lattice point p is inside
@@ -259,7 +258,7 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params) {
             }
         }
         for (int child = 0; child < 8; ++child) {
-            OctreeNode& ch = tree.nodes[leaves[i + child]];
+            OctreeNode& ch = tree.nodes[first + child];
             const int offset = (child & 1) + 3 * ((child >> 1) & 1) + 9 * (child >> 2);
             const std::uint32_t s = in >> offset;  // the child's corners are the bits 0, 1, 3, 4, 9, 10, 12, 13 of s
             ch.signs = std::uint8_t((s & 0x3u) | ((s >> 1) & 0xcu) | ((s >> 5) & 0x30u) | ((s >> 6) & 0xc0u));
@@ -275,9 +274,33 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params) {
                 qef.add(x.point, x.normal);
             }
             const glm::ivec3 q0 = base + glm::ivec3(child & 1, (child >> 1) & 1, child >> 2);
-            if (qef.count > 0) add_vertex(leaves[i + child], qef, q0, q0 + 1);
+            if (qef.count > 0) add_vertex(first + child, qef, q0, q0 + 1);
         }
-        i += 7;
+    };
+    // the leaves depth first (as Octree::leaves() lists them), without listing them
+    std::uint32_t stack[8 * 12];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+        const std::uint32_t n = stack[--top];
+        const OctreeNode& nd = tree.nodes[n];
+        if (nd.is_leaf()) {
+            if (nd.level == tree.max_level)  // its parent has a child that is not a leaf: split() past level L
+                throw std::logic_error("place_vertices: node " + std::to_string(n) + " of the finest level has a "
+                                       "sibling with children");
+            coarse_leaf(n);
+            continue;
+        }
+        const std::uint32_t first = nd.first_child;
+        bool finest_children = nd.level + 1 == tree.max_level;
+        for (int c = 0; c < 8 && finest_children; ++c) finest_children = tree.nodes[first + c].is_leaf();
+        if (finest_children) {
+            finest_group(first);
+            continue;
+        }
+        if (top + 8 > int(sizeof stack / sizeof stack[0]))
+            throw std::logic_error("place_vertices: the tree is deeper than 11 levels");
+        for (int c = 7; c >= 0; --c) stack[top++] = first + std::uint32_t(c);
     }
     return crossings;
     // END SOLUTION

@@ -194,13 +194,13 @@ std::size_t Octree::reachable_nodes() const {
 std::uint32_t Octree::split(std::uint32_t n) {
     const std::uint32_t first = std::uint32_t(nodes.size());
     const OctreeNode parent = nodes[n];
+    nodes.resize(first + 8);  // Speed: one size check for the 8 children, not 8
+    OctreeNode* children = nodes.data() + first;
     for (int c = 0; c < 8; ++c) {
-        OctreeNode ch;
-        ch.x = std::uint16_t(2 * parent.x + (c & 1));
-        ch.y = std::uint16_t(2 * parent.y + ((c >> 1) & 1));
-        ch.z = std::uint16_t(2 * parent.z + ((c >> 2) & 1));
-        ch.level = std::uint8_t(parent.level + 1);
-        nodes.push_back(ch);
+        children[c].x = std::uint16_t(2 * parent.x + (c & 1));
+        children[c].y = std::uint16_t(2 * parent.y + ((c >> 1) & 1));
+        children[c].z = std::uint16_t(2 * parent.z + ((c >> 2) & 1));
+        children[c].level = std::uint8_t(parent.level + 1);
     }
     nodes[n].first_child = first;
     return first;

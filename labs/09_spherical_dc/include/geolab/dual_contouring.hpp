@@ -26,6 +26,7 @@
 //!    are (r, θ, φ): x ↔ r, y ↔ θ, z ↔ φ, and z is taken modulo N (the φ seam).
 //!  - Output meshes are triangle soups, counter-clockwise seen from outside (outward normals).
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdlib>
 #include <cstdint>
@@ -378,7 +379,11 @@ public:
     Spherical lattice_spherical(glm::ivec3 q) const;
     //! The Cartesian position of a lattice point (exact on the polar axis, see to_cartesian).
     glm::dvec3 lattice_point(glm::ivec3 q) const {
-        if (coordinates == Coordinates::cartesian) return min_corner + (size / resolution()) * glm::dvec3(q);
+        if (coordinates == Coordinates::cartesian) {
+            // size · 2^−L: the exponent bits of 2^−L written directly, the same value as size / N without a division
+            const double inv_n = std::bit_cast<double>(std::uint64_t(1023 - max_level) << 52);
+            return min_corner + (size * inv_n) * glm::dvec3(q);
+        }
         return spherical_lattice_point(q);
     }
     //! f at a lattice point, evaluated once and cached under canonical(q) (the cache is mutable: not thread-safe).
