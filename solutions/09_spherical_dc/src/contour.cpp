@@ -25,6 +25,7 @@ struct CellEdge {
     int b, cax;          // the other two axes, (a + 1) % 3 and (a + 2) % 3
     int my_b, my_c;      // the cell's side of the edge along b and cax (−1 or +1): qb[quadrant], qc[quadrant]
     int dx[4], dy[4], dz[4];  // finest cells only: the cell in quadrant k is this cell + (dx, dy, dz)[k]
+    int owner_below = 0;      // the axes (bits 1 << axis) along which the quadrant-0 cell is below this cell
 };
 constexpr std::array<CellEdge, 12> make_cell_edges() {
     std::array<CellEdge, 12> out{};
@@ -36,12 +37,14 @@ constexpr std::array<CellEdge, 12> make_cell_edges() {
             const int my_b = (c & (1 << b)) ? -1 : +1, my_c = (c & (1 << cax)) ? -1 : +1;
             int k = 0;
             while (qb[k] != my_b || qc[k] != my_c) ++k;
-            CellEdge e{c, c | (1 << a), a, k, b, cax, my_b, my_c, {}, {}, {}};
+            CellEdge e{c, c | (1 << a), a, k, b, cax, my_b, my_c, {}, {}, {}, 0};
             for (int j = 0; j < 4; ++j) {
                 int d[3] = {0, 0, 0};
                 d[b] = (qb[j] - my_b) / 2;
                 d[cax] = (qc[j] - my_c) / 2;
                 e.dx[j] = d[0], e.dy[j] = d[1], e.dz[j] = d[2];
+                if (j == 0)
+                    for (int axis = 0; axis < 3; ++axis) e.owner_below |= (d[axis] < 0) << axis;
             }
             out[n++] = e;
         }
@@ -476,6 +479,10 @@ PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles) {
                 // emits the quad; the others only check that it exists. Anything else takes the general path.
                 auto quadrant_cell = [&](int k) { return cell + glm::ivec3(e.dx[k], e.dy[k], e.dz[k]); };
                 if (e.quadrant != 0) {
+                    // the leaf in quadrant 0 is a sibling (it is below this one only along axes where this one is the
+                    // upper child): a finest leaf sharing this sign-changing edge, so it has a vertex
+                    const int upper_child = (nd.x & 1) | (nd.y & 1) << 1 | (nd.z & 1) << 2;
+                    if ((upper_child & e.owner_below) == e.owner_below) continue;
                     if (finest_vertex(quadrant_cell(0)) != invalid_index) continue;
                 } else {
                     std::uint32_t v[4] = {nd.vertex, finest_vertex(quadrant_cell(1)), finest_vertex(quadrant_cell(2)),
