@@ -299,7 +299,7 @@ Octree build_octree(const ScalarField& f, const CartesianParams& params) {
         const std::int32_t s = tree.cell_span(nd.level);
         glm::ivec3 center(std::int32_t(nd.x) * s + s / 2, std::int32_t(nd.y) * s + s / 2,
                           std::int32_t(nd.z) * s + s / 2);
-        double half_diag = std::ldexp(half_diag0, -int(nd.level));
+        const double half_diag = half_diag0 / double(std::int32_t(1) << nd.level);  // exact: a power of 2
         // Speed: the centre of a cell that stays a leaf is never used again; cache only the centres of split cells
         // (they become corners of the children)
         const double v = tree.sample(center);
