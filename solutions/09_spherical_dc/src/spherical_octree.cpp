@@ -39,8 +39,9 @@ Octree build_spherical_octree(const ScalarField& f, int max_level, const glm::dv
             tree.split(n);
             continue;
         }
-        // Speed: the last level is most of the tree; reserve it once (the nodes of level L − 1 are n..end)
-        if (nd.level == tree.max_level - 1 && tree.nodes[n - 1].level != nd.level)
+        // Speed: at the first node of each level (its nodes are n..end), reserve room for all their children at once
+        // rather than letting the array double (each doubling copies it into fresh memory)
+        if (n > 0 && tree.nodes[n - 1].level != nd.level)
             tree.nodes.reserve(tree.nodes.size() + 8 * (tree.nodes.size() - n));
         const std::int32_t s = tree.cell_span(nd.level);
         const glm::ivec3 lo(std::int32_t(nd.x) * s, std::int32_t(nd.y) * s, std::int32_t(nd.z) * s);
