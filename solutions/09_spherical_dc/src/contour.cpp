@@ -143,79 +143,6 @@ constexpr std::array<std::uint32_t, 3> sub_lattice_sets(bool interior) {
     return out;
 }
 constexpr std::array<std::uint32_t, 3> edge_starts = sub_lattice_sets(false), interior_edges = sub_lattice_sets(true);
-
-//! Groups of finest siblings come in depth-first order, which is Morton order of their cells (x the lowest bit of
-//! each triple): is cell a before cell b? The axis whose coordinates differ in the highest bit decides (z before y
-//! before x at the same bit).
-bool morton_before(glm::ivec3 a, glm::ivec3 b) {
-    auto less_msb = [](unsigned u, unsigned v) { return u < v && u < (u ^ v); };
-    int axis = 2;
-    unsigned m = unsigned(a.z ^ b.z);
-    if (less_msb(m, unsigned(a.y ^ b.y))) axis = 1, m = unsigned(a.y ^ b.y);
-    if (less_msb(m, unsigned(a.x ^ b.x))) axis = 0;
-    return a[axis] < b[axis];
-}
-
-//! Speed (Cartesian trees): the crossings on a group's faces that groups later in the order will use, keyed by edge,
-//! with how many of them still will. An entry goes when its last user has taken it, so the map only holds the
-//! crossings along the boundary between the groups done and the groups to come: a few thousand, in cache, instead of
-//! a grid over the whole band. Open addressing, linear probing, deletion by backward shift.
-class PendingCrossings {
-public:
-    struct Entry {
-        std::uint64_t key = 0;  // 0: empty
-        int uses = 0;
-        Crossing crossing;
-    };
-    PendingCrossings() : slots_(1024) {}
-    //! The entry of key (≠ 0), or nullptr.
-    Entry* find(std::uint64_t key) {
-        for (std::size_t i = hash(key);; i = (i + 1) & mask()) {
-            if (slots_[i].key == key) return &slots_[i];
-            if (slots_[i].key == 0) return nullptr;
-        }
-    }
-    void insert(std::uint64_t key, const Crossing& x, int uses) {
-        if (2 * (size_ + 1) > slots_.size()) grow();
-        std::size_t i = hash(key);
-        while (slots_[i].key != 0) i = (i + 1) & mask();
-        slots_[i] = {key, uses, x};
-        ++size_;
-    }
-    //! One user took e's crossing; the last one removes it.
-    void used(Entry* e) {
-        if (--e->uses > 0) return;
-        std::size_t hole = std::size_t(e - slots_.data());
-        for (std::size_t i = (hole + 1) & mask(); slots_[i].key != 0; i = (i + 1) & mask()) {
-            const std::size_t home = hash(slots_[i].key);
-            // move slot i into the hole unless its home lies cyclically in (hole, i]
-            if (((i - home) & mask()) >= ((i - hole) & mask())) {
-                slots_[hole] = slots_[i];
-                hole = i;
-            }
-        }
-        slots_[hole].key = 0;
-        --size_;
-    }
-
-private:
-    std::size_t mask() const { return slots_.size() - 1; }
-    std::size_t hash(std::uint64_t k) const {
-        k ^= k >> 33;
-        k *= 0xff51afd7ed558ccdULL;
-        k ^= k >> 33;
-        return std::size_t(k) & mask();
-    }
-    void grow() {
-        std::vector<Entry> old(2 * slots_.size());
-        old.swap(slots_);
-        size_ = 0;
-        for (const Entry& e : old)
-            if (e.key != 0) insert(e.key, e.crossing, e.uses);
-    }
-    std::vector<Entry> slots_;
-    std::size_t size_ = 0;
-};
 }  // namespace
 // END SOLUTION
 
@@ -225,30 +152,23 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params) {
     const bool spherical = tree.coordinates == Coordinates::spherical;
     const std::int32_t n_res = tree.resolution();
     std::size_t crossings = 0;
-    // Finest edges are shared by 4 leaves: compute each crossing once.
-    // - Spherical trees: an edge is filed under its lower end (3 slots: the edges along +x, +y, +z), as canonical()
-    //   names it. canonical() merges the lattice points on the polar axis (all φ) and, when r_min = 0, at the
-    //   origin, so the θ-edges leaving a pole or the radial edges leaving the origin would share one slot; an edge
-    //   whose lower end is such a point is filed under its upper end in a second grid instead (the radial edges on
-    //   the axis, one edge for all φ, then still share theirs).
-    // - Cartesian trees: the leaves sharing an edge are in groups of 8 siblings that meet there (below); the
-    //   crossing passes from the first group to the later ones through `pending`, which forgets it after its last
-    //   use. (The grids hold every crossing of the band at once: about 23 MB at level 8, against a few thousand
-    //   pending entries.)
+    // finest edges are shared by 4 leaves: compute each crossing once. An edge is filed under its lower end (3 slots:
+    // the edges along +x, +y, +z), as canonical() names it. Spherical trees: canonical() merges the lattice points
+    // on the polar axis (all φ) and, when r_min = 0, at the origin, so the θ-edges leaving a pole or the radial edges
+    // leaving the origin would share one slot; an edge whose lower end is such a point is filed under its upper end
+    // in a second grid instead (the radial edges on the axis, one edge for all φ, then still share theirs).
     using EdgeSlots = std::array<std::uint32_t, 3>;
     const EdgeSlots no_edges{invalid_index, invalid_index, invalid_index};
-    BlockGrid<EdgeSlots> edge_crossing(no_edges, spherical ? n_res + 1 : 1),
-        edge_crossing_into(no_edges, spherical ? n_res + 1 : 1);  // (Cartesian trees use `pending` instead)
-    PendingCrossings pending;
+    BlockGrid<EdgeSlots> edge_crossing(no_edges, n_res + 1), edge_crossing_into(no_edges, n_res + 1);
     auto merged_point = [&](glm::ivec3 q) {
         return spherical && (q.y == 0 || q.y == n_res || (q.x == 0 && tree.r_min == 0.0));
     };
-    std::vector<Crossing> computed;  // spherical trees: the crossings of finest edges, by the index the grids hold
+    std::vector<Crossing> computed;  // the crossings of finest edges, by the index the grids hold
     // Speed: in the conservative band about half the leaves are cut by the surface, each with about one new crossing;
     // reserving that much avoids most copies of these large arrays while they grow (7 of 8 nodes are leaves).
     const std::size_t leaves_estimate = tree.nodes.size() - tree.nodes.size() / 8;
     tree.vertices.reserve(leaves_estimate / 2);
-    if (spherical) computed.reserve(leaves_estimate / 2);
+    computed.reserve(leaves_estimate / 2);
     // the crossing on the edge from lattice point qc (value vc) to qd = qc + e_a (value vd)
     auto compute = [&](glm::ivec3 qc, glm::ivec3 qd, double vc, double vd) {
         ++crossings;
@@ -321,54 +241,21 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params) {
         tree.sub_lattice_values(base, sub);
         std::uint32_t in = 0;  // bit p: sub-lattice point p is inside
         for (int p = 0; p < 27; ++p) in |= std::uint32_t(inside(sub[p])) << p;
-        // the crossings of the group's sign-changing edges (at most 54); the edge from point p along axis a has
-        // crossing[index[27 a + p]]
-        Crossing crossing[54];
-        std::uint8_t index[3 * 27];
-        int n_crossings = 0;
+        std::uint32_t index[3 * 27];  // the crossing of the group's edge from point p along axis a: index[27 a + p]
         if (in != 0 && in != all_sub_points) {
-            const glm::ivec3 group = base / 2;  // the parent's cell index
-            const std::int32_t n_groups = n_res / 2;
             for (int a = 0; a < 3; ++a) {
                 const int stride = a == 0 ? 1 : a == 1 ? 3 : 9;
                 for (std::uint32_t m = (in ^ (in >> stride)) & edge_starts[a]; m; m &= m - 1) {
                     const int p = std::countr_zero(m);
-                    const glm::ivec3 sub_p(p % 3, (p / 3) % 3, p / 9);
-                    const glm::ivec3 qc = base + sub_p;
+                    const glm::ivec3 qc = base + glm::ivec3(p % 3, (p / 3) % 3, p / 9);
                     glm::ivec3 qd = qc;
                     qd[a] += 1;
-                    index[27 * a + p] = std::uint8_t(n_crossings);
-                    Crossing& x = crossing[n_crossings++];
                     // an edge inside the parent cell belongs to no other group: no need to file it
                     if ((interior_edges[a] >> p) & 1u) {
-                        x = compute(qc, qd, sub[p], sub[p + stride]);
-                    } else if (spherical) {
-                        x = computed[finest_crossing(qc, qd, a, sub[p], sub[p + stride])];
+                        index[27 * a + p] = std::uint32_t(computed.size());
+                        computed.push_back(compute(qc, qd, sub[p], sub[p + stride]));
                     } else {
-                        // on the group's faces: shared with the groups across them (1 or 3); take it from a group
-                        // before this one, or compute it and leave it for the groups after
-                        const std::uint64_t key =
-                            (((std::uint64_t(qc.x) << 21 | std::uint64_t(qc.y)) << 21 | std::uint64_t(qc.z)) << 2 |
-                             std::uint64_t(a)) + 1;
-                        if (PendingCrossings::Entry* e = pending.find(key)) {
-                            x = e->crossing;
-                            pending.used(e);
-                            continue;
-                        }
-                        x = compute(qc, qd, sub[p], sub[p + stride]);
-                        const int b = (a + 1) % 3, c = (a + 2) % 3;
-                        const int off_b = sub_p[b] == 0 ? -1 : sub_p[b] == 2 ? 1 : 0;
-                        const int off_c = sub_p[c] == 0 ? -1 : sub_p[c] == 2 ? 1 : 0;
-                        int later = 0;
-                        for (int k = 1; k < 4; ++k) {
-                            if (((k & 1) && !off_b) || ((k & 2) && !off_c)) continue;
-                            glm::ivec3 g = group;
-                            if (k & 1) g[b] += off_b;
-                            if (k & 2) g[c] += off_c;
-                            if (g[b] < 0 || g[c] < 0 || g[b] >= n_groups || g[c] >= n_groups) continue;
-                            later += morton_before(group, g);
-                        }
-                        if (later > 0) pending.insert(key, x, later);
+                        index[27 * a + p] = finest_crossing(qc, qd, a, sub[p], sub[p + stride]);
                     }
                 }
             }
@@ -386,7 +273,7 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params) {
                 const CellEdge& e = cell_edges[changing.e[ei]];
                 const int p = simplify_tables.point[child][e.c];
                 if (spherical && repeated_axis_edge(e, base + glm::ivec3(p % 3, (p / 3) % 3, p / 9))) continue;
-                const Crossing& x = crossing[index[27 * e.a + p]];
+                const Crossing& x = computed[index[27 * e.a + p]];
                 qef.add(x.point, x.normal);
             }
             const glm::ivec3 q0 = base + glm::ivec3(child & 1, (child >> 1) & 1, child >> 2);
