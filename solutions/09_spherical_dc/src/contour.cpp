@@ -68,13 +68,10 @@ constexpr std::array<EdgeList, 256> make_edge_lists() {
 constexpr std::array<EdgeList, 256> changing_edges = make_edge_lists();
 // Speed: the sign tests of simplify as tables. point[child][c]: the sub-lattice point (i + 3j + 9k, i, j, k ∈ {0,1,2})
 // of the parent that is corner c of child `child` (so point[c][c] is the parent's corner c). single_sheet[m]: the
-// parent corners inside (bit c of m) and those outside are each connected through cube edges. feature[p]: for a
-// point p with a coordinate 1 (the centre of an edge, a face or the cell), the parent corners of that feature
-// (each 1 replaced by 0 or 2); 0 for the parent's corners.
+// parent corners inside (bit c of m) and those outside are each connected through cube edges.
 struct SimplifyTables {
     int point[8][8] = {};
     bool single_sheet[256] = {};
-    int feature[27] = {};
     // spread[child][signs]: the child's sign configuration as bits of the sub-lattice (bit point[child][c] for corner c)
     std::uint32_t spread[8][256] = {};
     // for the parent's corner signs m: the sub-lattice points allowed to be inside (a corner inside, or a feature with
@@ -102,28 +99,26 @@ constexpr SimplifyTables make_simplify_tables() {
             t.point[child][c] = ((child & 1) + (c & 1)) + 3 * (((child >> 1) & 1) + ((c >> 1) & 1)) +
                                 9 * ((child >> 2) + (c >> 2));
     for (int m = 0; m < 256; ++m) t.single_sheet[m] = corners_connected(m) && corners_connected(~m & 0xff);
-    for (int p = 0; p < 27; ++p) {
-        const int ijk[3] = {p % 3, (p / 3) % 3, p / 9};
-        if (ijk[0] != 1 && ijk[1] != 1 && ijk[2] != 1) continue;
-        for (int c = 0; c < 8; ++c) {
-            bool on = true;
-            for (int a = 0; a < 3; ++a)
-                if (ijk[a] != 1 && ijk[a] != 2 * ((c >> a) & 1)) on = false;
-            if (on) t.feature[p] |= 1 << c;
-        }
-    }
     for (int child = 0; child < 8; ++child)
         for (int signs = 0; signs < 256; ++signs)
             for (int c = 0; c < 8; ++c)
                 if ((signs >> c) & 1) t.spread[child][signs] |= 1u << t.point[child][c];
-    for (int m = 0; m < 256; ++m)
-        for (int p = 0; p < 27; ++p) {
-            // a corner of the parent (coordinates 0 or 2) is its own feature
-            const int corner = (p % 3) / 2 + 2 * (((p / 3) % 3) / 2) + 4 * ((p / 9) / 2);
-            const int corners = t.feature[p] ? t.feature[p] : 1 << corner;
+    for (int p = 0; p < 27; ++p) {
+        // the parent corners of the feature p is the centre of (each coordinate 1 replaced by 0 or 2): an edge, a
+        // face or the cell; a corner of the parent is its own feature
+        const int ijk[3] = {p % 3, (p / 3) % 3, p / 9};
+        int corners = 0;
+        for (int c = 0; c < 8; ++c) {
+            bool on = true;
+            for (int a = 0; a < 3; ++a)
+                if (ijk[a] != 1 && ijk[a] != 2 * ((c >> a) & 1)) on = false;
+            if (on) corners |= 1 << c;
+        }
+        for (int m = 0; m < 256; ++m) {
             if (corners & m) t.may_be_inside[m] |= 1u << p;
             if (corners & ~m & 0xff) t.may_be_outside[m] |= 1u << p;
         }
+    }
     return t;
 }
 constexpr SimplifyTables simplify_tables = make_simplify_tables();
@@ -131,6 +126,8 @@ constexpr SimplifyTables simplify_tables = make_simplify_tables();
 // the points from which an edge along axis a leaves (coordinate a is 0 or 1); interior_edges[a]: those whose edge
 // lies inside the parent (the other two coordinates are 1), shared by no other parent.
 constexpr std::uint32_t all_sub_points = (1u << 27) - 1;
+// the offset (i, j, k) of sub-lattice point p = i + 3j + 9k
+glm::ivec3 sub_offset(int p) { return {p % 3, (p / 3) % 3, p / 9}; }
 constexpr std::array<std::uint32_t, 3> sub_lattice_sets(bool interior) {
     std::array<std::uint32_t, 3> out{};
     for (int a = 0; a < 3; ++a)
@@ -247,7 +244,7 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params) {
                 const int stride = a == 0 ? 1 : a == 1 ? 3 : 9;
                 for (std::uint32_t m = (in ^ (in >> stride)) & edge_starts[a]; m; m &= m - 1) {
                     const int p = std::countr_zero(m);
-                    const glm::ivec3 qc = base + glm::ivec3(p % 3, (p / 3) % 3, p / 9);
+                    const glm::ivec3 qc = base + sub_offset(p);
                     glm::ivec3 qd = qc;
                     qd[a] += 1;
                     // an edge inside the parent cell belongs to no other group: no need to file it
@@ -272,7 +269,7 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params) {
             for (int ei = 0; ei < changing.n; ++ei) {
                 const CellEdge& e = cell_edges[changing.e[ei]];
                 const int p = simplify_tables.point[child][e.c];
-                if (spherical && repeated_axis_edge(e, base + glm::ivec3(p % 3, (p / 3) % 3, p / 9))) continue;
+                if (spherical && repeated_axis_edge(e, base + sub_offset(p))) continue;
                 const Crossing& x = computed[index[27 * e.a + p]];
                 qef.add(x.point, x.normal);
             }
@@ -280,31 +277,22 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params) {
             if (qef.count > 0) add_vertex(first + child, qef, q0, q0 + 1);
         }
     };
-    // the leaves depth first (as Octree::leaves() lists them), without listing them
-    std::uint32_t stack[8 * 12];
-    int top = 0;
-    stack[top++] = 0;
-    while (top > 0) {
-        const std::uint32_t n = stack[--top];
+    // the leaves depth first, a group of finest siblings at once
+    tree.depth_first([&](std::uint32_t n) {
         const OctreeNode& nd = tree.nodes[n];
         if (nd.is_leaf()) {
             if (nd.level == tree.max_level)  // its parent has a child that is not a leaf: split() past level L
                 throw std::logic_error("place_vertices: node " + std::to_string(n) + " of the finest level has a "
                                        "sibling with children");
             coarse_leaf(n);
-            continue;
+            return false;
         }
         const std::uint32_t first = nd.first_child;
         bool finest_children = nd.level + 1 == tree.max_level;
         for (int c = 0; c < 8 && finest_children; ++c) finest_children = tree.nodes[first + c].is_leaf();
-        if (finest_children) {
-            finest_group(first);
-            continue;
-        }
-        if (top + 8 > int(sizeof stack / sizeof stack[0]))
-            throw std::logic_error("place_vertices: the tree is deeper than 11 levels");
-        for (int c = 7; c >= 0; --c) stack[top++] = first + std::uint32_t(c);
-    }
+        if (finest_children) finest_group(first);
+        return !finest_children;
+    });
     return crossings;
     // END SOLUTION
 }

@@ -125,7 +125,7 @@ void Octree::sub_lattice_values(glm::ivec3 base, double (&out)[27]) const {
                 const glm::ivec3 q = base + glm::ivec3(i, j, k);
                 double* v;
                 if (((q.x | q.y | q.z) & 1) == 0) {
-                    v = &even_cache_.slot(glm::ivec3(q.x >> 1, q.y >> 1, q.z >> 1));
+                    v = &cache_slot(q);
                 } else {
                     double*& slots = blocks[block_step[2][k]][block_step[1][j]][block_step[0][i]];
                     if (!slots) slots = cache_.block_of(q);
@@ -159,21 +159,10 @@ std::vector<std::uint32_t> Octree::leaves() const {
     std::vector<std::uint32_t> out;
     if (nodes.empty()) return out;
     out.reserve(nodes.size() - nodes.size() / 8);  // 7 of every 8 nodes are leaves once the tree is split
-    // depth first with an explicit stack: at most 7 pending siblings per level below the root
-    std::uint32_t stack[8 * 12];
-    int top = 0;
-    stack[top++] = 0;
-    while (top > 0) {
-        const std::uint32_t n = stack[--top];
-        const std::uint32_t first = nodes[n].first_child;
-        if (first == invalid_index) {
-            out.push_back(n);
-        } else {
-            if (top + 8 > int(sizeof stack / sizeof stack[0]))
-                throw std::logic_error("Octree::leaves: the tree is deeper than 11 levels");
-            for (int c = 7; c >= 0; --c) stack[top++] = first + std::uint32_t(c);
-        }
-    }
+    depth_first([&](std::uint32_t n) {
+        if (nodes[n].is_leaf()) out.push_back(n);
+        return true;
+    });
     return out;
 }
 

@@ -214,14 +214,6 @@ public:
     }
     //! The index of q's slot within its block.
     static std::size_t index_in_block(glm::ivec3 q) { return local(q); }
-    void clear() {
-        keys_.clear();
-        ids_.clear();
-        dense_ = Directory(nb_ * nb_ * nb_);
-        chunks_.clear();
-        blocks_ = 0;
-        last_.key = ~std::uint64_t(0);
-    }
 
 private:
     static constexpr std::size_t block_size = std::size_t(B) * B * B;
@@ -410,6 +402,24 @@ public:
     std::uint32_t locate(glm::ivec3 p2) const;
     //! Indices of all leaves reachable from the root, depth first.
     std::vector<std::uint32_t> leaves() const;
+    //! Visit the nodes reachable from the root depth first, children in the order c = 0..7 (the order of leaves()):
+    //! visit(n) is called for each node reached and returns whether to go on into n's children (ignored for leaves).
+    template <class Visit>
+    void depth_first(Visit&& visit) const {
+        if (nodes.empty()) return;
+        std::uint32_t stack[8 * 12];  // at most 7 pending siblings per level below the root
+        int top = 0;
+        stack[top++] = 0;
+        while (top > 0) {
+            const std::uint32_t n = stack[--top];
+            if (!visit(n)) continue;
+            const std::uint32_t first = nodes[n].first_child;
+            if (first == invalid_index) continue;
+            if (top + 8 > int(sizeof stack / sizeof stack[0]))
+                throw std::logic_error("Octree::depth_first: the tree is deeper than 11 levels");
+            for (int c = 7; c >= 0; --c) stack[top++] = first + std::uint32_t(c);
+        }
+    }
     //! Number of nodes reachable from the root.
     std::size_t reachable_nodes() const;
     //! Number of cached field samples.
