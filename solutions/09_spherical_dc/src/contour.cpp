@@ -166,6 +166,8 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params) {
     const std::size_t leaves_estimate = tree.nodes.size() - tree.nodes.size() / 8;
     tree.vertices.reserve(leaves_estimate / 2);
     computed.reserve(leaves_estimate / 2);
+    prefer_huge_pages(tree.vertices);  // Speed: 2 MiB pages for the two largest arrays (lib memory.hpp)
+    prefer_huge_pages(computed);
     // the crossing on the edge from lattice point qc (value vc) to qd = qc + e_a (value vd)
     auto compute = [&](glm::ivec3 qc, glm::ivec3 qd, double vc, double vd) {
         ++crossings;
@@ -376,11 +378,16 @@ PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles) {
     soup.positions.reserve(tree.vertices.size());
     soup.indices.reserve(6 * tree.vertices.size());
     soup.offsets.reserve(2 * tree.vertices.size() + 1);
+    prefer_huge_pages(soup.positions);  // Speed: 2 MiB pages for large arrays (lib memory.hpp)
+    prefer_huge_pages(soup.indices);
+    prefer_huge_pages(soup.offsets);
     // Speed: the dual vertices' positions copied in one sequential pass into a compact array. The polygons reach
     // them in a scattered order, and each DualVertex (position + QEF) is 136 bytes: gathering positions from there
     // costs a cache miss per vertex, from here mostly cache hits.
-    std::vector<glm::dvec3> position(tree.vertices.size());
-    for (std::size_t i = 0; i < position.size(); ++i) position[i] = tree.vertices[i].position;
+    std::vector<glm::dvec3> position;
+    position.reserve(tree.vertices.size());
+    prefer_huge_pages(position);
+    for (const DualVertex& v : tree.vertices) position.push_back(v.position);
     auto soup_index = [&](std::uint32_t vertex) {
         if (remap[vertex] == invalid_index) {
             remap[vertex] = std::uint32_t(soup.positions.size());

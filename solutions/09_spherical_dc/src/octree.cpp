@@ -284,8 +284,10 @@ Octree build_octree(const ScalarField& f, const CartesianParams& params) {
         if (nd.level >= tree.max_level) continue;
         // Speed: at the first node of each level (its nodes are n..end), reserve room for all their children at once
         // rather than letting the array double (each doubling copies it into fresh memory)
-        if (n > 0 && tree.nodes[n - 1].level != nd.level)
+        if (n > 0 && tree.nodes[n - 1].level != nd.level) {
             tree.nodes.reserve(tree.nodes.size() + 8 * (tree.nodes.size() - n));
+            prefer_huge_pages(tree.nodes);  // and 2 MiB pages once the array is large (lib memory.hpp)
+        }
         const std::int32_t s = tree.cell_span(nd.level);
         glm::ivec3 center(std::int32_t(nd.x) * s + s / 2, std::int32_t(nd.y) * s + s / 2,
                           std::int32_t(nd.z) * s + s / 2);

@@ -42,6 +42,7 @@
 #include <glm/vec3.hpp>
 
 #include "geolab/field.hpp"
+#include "geolab/memory.hpp"
 #include "geolab/soup.hpp"
 
 namespace geolab::dc {
@@ -192,6 +193,11 @@ public:
         if (extent > 0) {
             nb_ = (std::size_t(extent) + B - 1) / B;
             dense_ = Directory(nb_ * nb_ * nb_);
+            // Speed: blocks come in chunks of up to 1/8 of the directory's blocks, at most 8 MiB, so that a large
+            // grid gets chunks large enough for 2 MiB pages (prefer_huge_pages) and a small one stays small
+            while (chunk_shift_ < 20 && (std::size_t(2) << chunk_shift_) <= nb_ * nb_ * nb_ / 8 &&
+                   (std::size_t(2) << chunk_shift_) * block_size * sizeof(T) <= (std::size_t(8) << 20))
+                ++chunk_shift_;
         }
     }
     //! The slot of lattice point q; `empty` until written.
@@ -241,8 +247,10 @@ private:
         std::size_t n_ = 0;
         std::uint32_t* p_ = nullptr;
     };
-    static constexpr std::size_t chunk_blocks = 256;  // blocks are allocated 256 at a time and never move
-    T* block(std::uint32_t id) const { return chunks_[id / chunk_blocks].data() + block_size * (id % chunk_blocks); }
+    // blocks are allocated 2^chunk_shift_ at a time (at least 256) and never move
+    T* block(std::uint32_t id) const {
+        return chunks_[id >> chunk_shift_].data() + block_size * (id & ((std::uint32_t(1) << chunk_shift_) - 1));
+    }
     static std::size_t local(glm::ivec3 q) {
         return std::size_t(q.x & (B - 1)) | std::size_t(q.y & (B - 1)) << log_b | std::size_t(q.z & (B - 1)) << (2 * log_b);
     }
@@ -279,7 +287,10 @@ private:
         }
         if (*id == 0) {
             if (!create) return false;
-            if (blocks_ % chunk_blocks == 0) chunks_.emplace_back().reserve(chunk_blocks * block_size);
+            if ((blocks_ & ((std::size_t(1) << chunk_shift_) - 1)) == 0) {
+                chunks_.emplace_back().reserve(block_size << chunk_shift_);
+                prefer_huge_pages(chunks_.back());
+            }
             *id = std::uint32_t(++blocks_);  // ids are stored + 1: 0 means no block
             chunks_.back().resize(chunks_.back().size() + block_size, empty_);  // within the reserve: no move
         }
@@ -303,6 +314,7 @@ private:
     }
     T empty_;
     std::size_t nb_ = 0;  // blocks per axis of the dense directory
+    int chunk_shift_ = 8;  // log2 of the blocks per chunk
     // mutable: get() memoises the last block
     Directory dense_;  // block id + 1 per block position (0: none); empty when hashing
     mutable std::vector<std::uint64_t> keys_;
