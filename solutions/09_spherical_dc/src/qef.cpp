@@ -50,8 +50,8 @@ glm::dvec3 Qef::solve(double tau, glm::dvec3* mass_point_out, int* rank_out) con
     // normals: λ2 + λ3 = σ is tiny. With T = trace = λ1 + σ and S = sum of the principal 2×2 minors ≥ λ1 σ,
     // S < (T − σ*) σ*, σ* = τ T / (1 + τ), proves σ < σ* < τ λ1 (both small eigenvalues truncated, rank 1); we
     // ask for half of that bound, to stay clear of the threshold. Then λ1 is the largest root of
-    // det(λI − AᵀA) = λ³ − Tλ² + Sλ − D, reached by Newton from T (monotone: the cubic is convex and increasing
-    // above its largest root), and e1 is the largest cross product of two rows of AᵀA − λ1 I.
+    // det(λI − AᵀA) = λ³ − Tλ² + Sλ − D, reached by Newton from above (monotone: the cubic is convex and
+    // increasing above its largest root), and e1 is the largest cross product of two rows of AᵀA − λ1 I.
     const double trace = ata[0] + ata[3] + ata[5];
     const double minors = ata[0] * ata[3] - ata[1] * ata[1] + ata[0] * ata[5] - ata[2] * ata[2] +
                           ata[3] * ata[5] - ata[4] * ata[4];
@@ -59,12 +59,14 @@ glm::dvec3 Qef::solve(double tau, glm::dvec3* mass_point_out, int* rank_out) con
     if (tau > 0.0 && tau < 1.0 && trace > 0.0 && minors < 0.5 * (trace - sigma) * sigma) {
         const double det = ata[0] * (ata[3] * ata[5] - ata[4] * ata[4]) - ata[1] * (ata[1] * ata[5] - ata[4] * ata[2]) +
                            ata[2] * (ata[1] * ata[4] - ata[3] * ata[2]);
-        double l1 = trace;
+        // Start at T − S/T: still ≥ λ1 (S/T ≤ σ because λ2 λ3 ≤ σ²) and within σ²/T of it. Newton converges
+        // quadratically: after a step δ the error is about 2δ²/λ1, so a step below 1e-8 λ1 leaves < 1e-15 λ1.
+        double l1 = trace - minors / trace;
         for (int it = 0; it < 16; ++it) {
             const double p = ((l1 - trace) * l1 + minors) * l1 - det, dp = (3.0 * l1 - 2.0 * trace) * l1 + minors;
             const double step = dp > 0.0 ? p / dp : 0.0;
             l1 -= step;
-            if (!(step > 1e-15 * l1)) break;
+            if (!(step > 1e-8 * l1)) break;
         }
         const glm::dvec3 r0(ata[0] - l1, ata[1], ata[2]), r1(ata[1], ata[3] - l1, ata[4]), r2(ata[2], ata[4], ata[5] - l1);
         glm::dvec3 e = glm::cross(r0, r1);
@@ -72,9 +74,8 @@ glm::dvec3 Qef::solve(double tau, glm::dvec3* mass_point_out, int* rank_out) con
             if (glm::dot(c, c) > glm::dot(e, e)) e = c;
         const double len2 = glm::dot(e, e);
         if (len2 > 0.0 && l1 > 0.0) {
-            e /= std::sqrt(len2);
             if (rank_out) *rank_out = 1;
-            return m + e * (glm::dot(e, r) / l1);
+            return m + e * (glm::dot(e, r) / (l1 * len2));  // e unnormalised: e (e·r) / (λ1 |e|²)
         }
     }
     // symmetric eigen-decomposition AᵀA = V diag(λ) Vᵀ by cyclic Jacobi rotations (Golub & Van Loan §8.5)
