@@ -127,7 +127,17 @@ constexpr SimplifyTables simplify_tables = make_simplify_tables();
 // lies inside the parent (the other two coordinates are 1), shared by no other parent.
 constexpr std::uint32_t all_sub_points = (1u << 27) - 1;
 // the offset (i, j, k) of sub-lattice point p = i + 3j + 9k
-glm::ivec3 sub_offset(int p) { return {p % 3, (p / 3) % 3, p / 9}; }
+// (a table: computing the three ints on the fly made the compiler spill and reload them at a stall)
+struct SubOffsets {
+    int ijk[27][3] = {};
+};
+constexpr SubOffsets make_sub_offsets() {
+    SubOffsets t;
+    for (int p = 0; p < 27; ++p) t.ijk[p][0] = p % 3, t.ijk[p][1] = (p / 3) % 3, t.ijk[p][2] = p / 9;
+    return t;
+}
+constexpr SubOffsets sub_offsets = make_sub_offsets();
+glm::ivec3 sub_offset(int p) { return {sub_offsets.ijk[p][0], sub_offsets.ijk[p][1], sub_offsets.ijk[p][2]}; }
 constexpr std::array<std::uint32_t, 3> sub_lattice_sets(bool interior) {
     std::array<std::uint32_t, 3> out{};
     for (int a = 0; a < 3; ++a)

@@ -292,7 +292,9 @@ private:
                 prefer_huge_pages(chunks_.back());
             }
             *id = std::uint32_t(++blocks_);  // ids are stored + 1: 0 means no block
-            chunks_.back().resize(chunks_.back().size() + block_size, empty_);  // within the reserve: no move
+            // within the reserve: no move. Speed: copied from a ready empty block (a plain copy of 64 slots)
+            if (empty_block_.empty()) empty_block_.assign(block_size, empty_);
+            chunks_.back().insert(chunks_.back().end(), empty_block_.begin(), empty_block_.end());
         }
         last_.key = key;
         last_.block = block(*id - 1);
@@ -320,6 +322,7 @@ private:
     mutable std::vector<std::uint64_t> keys_;
     mutable std::vector<std::uint32_t> ids_;  // block id + 1 per hash slot
     mutable std::vector<std::vector<T>> chunks_;
+    mutable std::vector<T> empty_block_;  // block_size copies of empty_, made with the first block
     mutable std::size_t blocks_ = 0;
     // the block used last (get() and slot() memoise it); a copy starts without, so that it never points into the
     // blocks of the grid it was copied from
