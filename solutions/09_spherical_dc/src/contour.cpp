@@ -51,6 +51,16 @@ constexpr std::array<CellEdge, 12> make_cell_edges() {
     return out;
 }
 constexpr std::array<CellEdge, 12> cell_edges = make_cell_edges();
+// edge_index.of[a][c]: the index in cell_edges of the edge from corner c along axis a (bit a of c clear)
+struct EdgeIndex {
+    int of[3][8] = {};
+};
+constexpr EdgeIndex make_edge_index() {
+    EdgeIndex t;
+    for (int i = 0; i < 12; ++i) t.of[cell_edges[i].a][cell_edges[i].c] = i;
+    return t;
+}
+constexpr EdgeIndex edge_index = make_edge_index();
 // Speed: for each sign configuration (OctreeNode::signs), the edges that change sign (indices into cell_edges),
 // so that the loops visit those only.
 struct EdgeList {
@@ -150,6 +160,39 @@ constexpr std::array<std::uint32_t, 3> sub_lattice_sets(bool interior) {
     return out;
 }
 constexpr std::array<std::uint32_t, 3> edge_starts = sub_lattice_sets(false), interior_edges = sub_lattice_sets(true);
+// Speed (contour): the edges of a group's sub-lattice, group_edges[a][p] for the edge from point p along axis a. The
+// cell in quadrant k is the group's child child[k] (0..7) or, when child[k] < 0, the finest cell at offset d[k] from
+// the group's child-0 cell, in a neighbouring group; edge[k] is the index in cell_edges of the edge as an edge of that
+// cell.
+struct GroupEdge {
+    int child[4] = {};
+    int d[4][3] = {};
+    int edge[4] = {};
+};
+using GroupEdges = std::array<std::array<GroupEdge, 27>, 3>;
+constexpr GroupEdges make_group_edges() {
+    GroupEdges out{};
+    for (int a = 0; a < 3; ++a)
+        for (int p = 0; p < 27; ++p) {
+            const int o[3] = {p % 3, (p / 3) % 3, p / 9}, b = (a + 1) % 3, cax = (a + 2) % 3;
+            GroupEdge& g = out[a][p];
+            for (int k = 0; k < 4; ++k) {
+                int l[3] = {o[0], o[1], o[2]};
+                l[b] += (qb[k] - 1) / 2;
+                l[cax] += (qc[k] - 1) / 2;
+                const bool inside = l[b] >= 0 && l[cax] >= 0 && l[b] <= 1 && l[cax] <= 1 && o[a] <= 1;
+                g.child[k] = inside ? l[0] + 2 * l[1] + 4 * l[2] : -1;
+                int corner = 0;
+                for (int i = 0; i < 3; ++i) {
+                    g.d[k][i] = l[i];
+                    corner |= (o[i] - l[i]) << i;
+                }
+                g.edge[k] = edge_index.of[a][corner & 7];
+            }
+        }
+    return out;
+}
+constexpr GroupEdges group_edges = make_group_edges();
 }  // namespace
 // END SOLUTION
 
@@ -411,27 +454,36 @@ PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles) {
         return soup_index(l.vertex);
     };
     auto leaf_ref = [&](std::uint32_t l) { return LeafRef{l, tree.nodes[l].vertex, tree.nodes[l].level}; };
-    const std::vector<std::uint32_t> leaves = tree.leaves();
     // finest leaves by cell index: neighbours at the finest level without descending the tree. Speed: the grid
     // holds their vertex (4 bytes a cell), so that the (large) node array is not read again for them.
     constexpr std::uint32_t not_finest = invalid_index, no_vertex = invalid_index - 1;
     BlockGrid<std::uint32_t> finest(not_finest, n_res);
-    for (std::size_t i = 0; i < leaves.size(); ++i) {
-        const OctreeNode& nd = tree.nodes[leaves[i]];
-        if (nd.level != tree.max_level) continue;
-        // Speed: 8 finest siblings in a row (depth-first order) are 8 slots of one block
-        if (((nd.x | nd.y | nd.z) & 1) == 0 && i + 8 <= leaves.size() && leaves[i + 7] == leaves[i] + 7) {
-            std::uint32_t* slots = finest.block_of({nd.x, nd.y, nd.z});
-            for (int c = 0; c < 8; ++c) {
-                const OctreeNode& ch = tree.nodes[leaves[i] + c];
-                slots[BlockGrid<std::uint32_t>::index_in_block({ch.x, ch.y, ch.z})] =
-                    ch.vertex == invalid_index ? no_vertex : ch.vertex;
-            }
-            i += 7;
-            continue;
+    auto finest_slot = [&](const OctreeNode& nd) { return nd.vertex == invalid_index ? no_vertex : nd.vertex; };
+    // One depth-first walk fills the grid and sorts the leaves: `groups` holds the first child of every node of
+    // level L − 1 whose 8 children are (finest) leaves, `others` every other leaf. Speed: the Cartesian polygons
+    // are made a group at a time (finest_group below); spherical trees take every leaf one by one (`others`).
+    std::vector<std::uint32_t> groups, others;
+    tree.depth_first([&](std::uint32_t n) {
+        const OctreeNode& nd = tree.nodes[n];
+        if (nd.is_leaf()) {
+            if (nd.level == tree.max_level) finest.slot({nd.x, nd.y, nd.z}) = finest_slot(nd);
+            others.push_back(n);
+            return false;
         }
-        finest.slot({nd.x, nd.y, nd.z}) = nd.vertex == invalid_index ? no_vertex : nd.vertex;
-    }
+        const std::uint32_t first = nd.first_child;
+        if (nd.level + 1 != tree.max_level) return true;
+        for (int c = 0; c < 8; ++c)
+            if (!tree.nodes[first + c].is_leaf()) return true;
+        // the 8 siblings' cells (2x, 2y, 2z) + {0, 1}³ are 8 slots of one block
+        std::uint32_t* slots = finest.block_of({2 * nd.x, 2 * nd.y, 2 * nd.z});
+        for (int c = 0; c < 8; ++c) {
+            const OctreeNode& ch = tree.nodes[first + c];
+            slots[BlockGrid<std::uint32_t>::index_in_block({ch.x, ch.y, ch.z})] = finest_slot(ch);
+            if (spherical) others.push_back(first + c);
+        }
+        if (!spherical) groups.push_back(first);
+        return false;
+    });
     // the vertex of the finest leaf in finest cell `cell`, or invalid_index when that cell is not a finest leaf with
     // a vertex (or outside the domain)
     auto finest_vertex = [&](glm::ivec3 cell) {
@@ -464,7 +516,98 @@ PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles) {
             }
         }
     };
-    for (std::uint32_t li : leaves) {
+    // The general path for the sign-changing edge e of leaf li (any level): the leaves in the 4 quadrants by find_leaf
+    // (locate()), emitted by the first quadrant holding a leaf as small as li, unless a smaller leaf subdivides it.
+    auto general_edge = [&](std::uint32_t li, const OctreeNode& nd, const CellEdge& e) {
+        const int a = e.a, b = e.b, cax = e.cax, c = e.c, my_b = e.my_b, my_c = e.my_c;
+        glm::ivec3 m2 = 2 * tree.corner(nd, c);
+        m2[a] += tree.cell_span(nd.level);
+        LeafRef around[4];
+        bool emit = true;
+        for (int k = 0; k < 4 && emit; ++k) {
+            if (qb[k] == my_b && qc[k] == my_c) {
+                around[k] = LeafRef{li, nd.vertex, nd.level};
+                continue;
+            }
+            glm::ivec3 p2 = m2;
+            p2[b] += qb[k];
+            p2[cax] += qc[k];
+            around[k] = find_leaf(p2);
+            if (!around[k].found()) emit = false;  // outside the domain
+            else if (around[k].level > nd.level) emit = false;  // not minimal here
+            else {
+                // emit once: from the first quadrant holding a leaf as small as this one
+                bool before_me = false;
+                for (int j = 0; j < 4; ++j)
+                    if (qb[j] == my_b && qc[j] == my_c) break;
+                    else if (j == k) before_me = true;
+                if (before_me && around[k].level == nd.level) emit = false;
+            }
+        }
+        if (!emit) return;
+        // drop repeated leaves (adaptive trees), orient by the sign at the lower end
+        LeafRef poly[4];
+        int m = 0;
+        for (int k = 0; k < 4; ++k) {
+            const LeafRef& l = nd.corner_inside(c) ? around[k] : around[3 - k];
+            if (m == 0 || !poly[m - 1].same(l)) poly[m++] = l;
+        }
+        if (m > 1 && poly[m - 1].same(poly[0])) --m;
+        if (m < 3) return;
+        std::uint32_t w[4];
+        for (int k = 0; k < m; ++k) w[k] = soup_vertex(poly[k]);
+        emit_polygon(w, m);
+    };
+    // Speed (Cartesian): the 8 finest leaves of a node of level L − 1 as one group. Their corner signs are the 27
+    // points of the node's 3×3×3 sub-lattice (bit p = i + 3j + 9k, as in simplify). The group emits the quads of the
+    // sign-changing edges whose quadrant-0 cell is one of its leaves: the 4 cells around such an edge are its own
+    // leaves or finest leaves of the groups above it along b and c. A sign-changing edge whose quadrant-0 cell lies
+    // in a group below is that group's, unless that cell is not a finest leaf with a vertex: then, and wherever a
+    // cell around is not one, the general path decides (as the leaf-by-leaf loop below would).
+    auto finest_group = [&](std::uint32_t first) {
+        std::uint32_t in = 0, v[8];
+        for (int child = 0; child < 8; ++child) {
+            const OctreeNode& ch = tree.nodes[first + child];
+            in |= simplify_tables.spread[child][ch.signs];
+            v[child] = ch.vertex;
+        }
+        if (in == 0 || in == all_sub_points) return;
+        const glm::ivec3 base(tree.nodes[first].x, tree.nodes[first].y, tree.nodes[first].z);  // child 0's cell
+        for (int a = 0; a < 3; ++a) {
+            const int stride = a == 0 ? 1 : a == 1 ? 3 : 9;
+            for (std::uint32_t m = (in ^ (in >> stride)) & edge_starts[a]; m; m &= m - 1) {
+                const int p = std::countr_zero(m);
+                const GroupEdge& g = group_edges[a][p];
+                auto neighbour = [&](int k) { return finest_vertex(base + glm::ivec3(g.d[k][0], g.d[k][1], g.d[k][2])); };
+                if (g.child[0] < 0) {  // quadrant 0 is below this group
+                    if (neighbour(0) != invalid_index) continue;
+                    for (int k = 1; k < 4; ++k) {
+                        if (g.child[k] < 0) continue;
+                        const std::uint32_t li = first + std::uint32_t(g.child[k]);
+                        if (v[g.child[k]] != invalid_index) general_edge(li, tree.nodes[li], cell_edges[g.edge[k]]);
+                    }
+                    continue;
+                }
+                std::uint32_t around[4];
+                bool all_finest = true;
+                for (int k = 0; k < 4 && all_finest; ++k) {
+                    around[k] = g.child[k] >= 0 ? v[g.child[k]] : neighbour(k);
+                    all_finest = around[k] != invalid_index;
+                }
+                if (all_finest) {
+                    std::uint32_t w[4];
+                    const bool lower_inside = (in >> p) & 1u;
+                    for (int k = 0; k < 4; ++k) w[k] = soup_index(around[lower_inside ? k : 3 - k]);
+                    emit_polygon(w, 4);
+                } else {
+                    const std::uint32_t li = first + std::uint32_t(g.child[0]);
+                    if (v[g.child[0]] != invalid_index) general_edge(li, tree.nodes[li], cell_edges[g.edge[0]]);
+                }
+            }
+        }
+    };
+    for (std::uint32_t first : groups) finest_group(first);
+    for (std::uint32_t li : others) {
         const OctreeNode& nd = tree.nodes[li];
         if (nd.vertex == invalid_index) continue;
         const std::int32_t span = tree.cell_span(nd.level);
@@ -473,7 +616,7 @@ PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles) {
         const EdgeList& changing = changing_edges[nd.signs];
         for (int ei = 0; ei < changing.n; ++ei) {
             const CellEdge& e = cell_edges[changing.e[ei]];
-            const int a = e.a, b = e.b, cax = e.cax, c = e.c, my_b = e.my_b, my_c = e.my_c;
+            const int a = e.a, c = e.c;
             const glm::ivec3 q0 = tree.corner(nd, c);
             if (spherical) {
                 if (a == 0 && (q0.y == 0 || q0.y == n_res)) continue;  // on the polar axis: a pole ring
@@ -501,45 +644,7 @@ PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles) {
                     }
                 }
             }
-            {
-                glm::ivec3 m2 = 2 * q0;
-                m2[a] += span;
-                LeafRef around[4];
-                bool emit = true;
-                for (int k = 0; k < 4 && emit; ++k) {
-                    if (qb[k] == my_b && qc[k] == my_c) {
-                        around[k] = LeafRef{li, nd.vertex, nd.level};
-                        continue;
-                    }
-                    glm::ivec3 p2 = m2;
-                    p2[b] += qb[k];
-                    p2[cax] += qc[k];
-                    around[k] = find_leaf(p2);
-                    if (!around[k].found()) emit = false;  // outside the domain
-                    else if (around[k].level > nd.level) emit = false;  // not minimal here
-                    else {
-                        // emit once: from the first quadrant holding a leaf as small as this one
-                        bool before_me = false;
-                        for (int j = 0; j < 4; ++j)
-                            if (qb[j] == my_b && qc[j] == my_c) break;
-                            else if (j == k) before_me = true;
-                        if (before_me && around[k].level == nd.level) emit = false;
-                    }
-                }
-                if (!emit) continue;
-                // drop repeated leaves (adaptive trees), orient by the sign at the lower end
-                LeafRef poly[4];
-                int m = 0;
-                for (int k = 0; k < 4; ++k) {
-                    const LeafRef& l = nd.corner_inside(c) ? around[k] : around[3 - k];
-                    if (m == 0 || !poly[m - 1].same(l)) poly[m++] = l;
-                }
-                if (m > 1 && poly[m - 1].same(poly[0])) --m;
-                if (m < 3) continue;
-                std::uint32_t w[4];
-                for (int k = 0; k < m; ++k) w[k] = soup_vertex(poly[k]);
-                emit_polygon(w, m);
-            }
+            general_edge(li, nd, e);
         }
         // spherical: the radial edge on the polar axis, collected once by the leaf at φ index 0
         if (!spherical || !poles || nd.z != 0) continue;
