@@ -93,11 +93,6 @@ glm::dvec3 Octree::spherical_lattice_point(glm::ivec3 q) const {
     return origin + glm::dvec3(r * st * cos_p_[p], r * st * sin_p_[p], r * cos_t_[t]);
 }
 
-double Octree::sample(glm::ivec3 q) const {
-    ++samples_;
-    return field->value(lattice_point(q));
-}
-
 glm::dvec3 Octree::spherical_point(const Spherical& s) const { return origin + to_cartesian(s); }
 
 void Octree::sub_lattice_values(glm::ivec3 base, double (&out)[27]) const {

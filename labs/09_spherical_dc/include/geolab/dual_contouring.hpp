@@ -45,6 +45,15 @@
 #include "geolab/memory.hpp"
 #include "geolab/soup.hpp"
 
+//! Speed: forces inlining of the few small functions on the hottest paths (block look-ups of the lattice grids). Left
+//! to itself the compiler keeps them out of line in large callers, and a glm::ivec3 passed by value is then packed
+//! into registers through memory, a store-forwarding stall at each call.
+#if defined(__GNUC__)
+#define GEOLAB_INLINE inline __attribute__((always_inline))
+#else
+#define GEOLAB_INLINE inline
+#endif
+
 namespace geolab::dc {
 
 inline constexpr std::uint32_t invalid_index = 0xffffffffu;
@@ -201,19 +210,19 @@ public:
         }
     }
     //! The slot of lattice point q; `empty` until written.
-    T& slot(glm::ivec3 q) {
+    GEOLAB_INLINE T& slot(glm::ivec3 q) {
         const std::uint64_t key = block_key(q);
         if (key != last_.key) find_block(key, true);
         return last_.block[local(q)];
     }
     //! The value at q, or `empty` (does not create blocks).
-    T get(glm::ivec3 q) const {
+    GEOLAB_INLINE T get(glm::ivec3 q) const {
         const std::uint64_t key = block_key(q);
         if (key != last_.key && !find_block(key, false)) return empty_;
         return last_.block[local(q)];
     }
     //! The B³ slots of the block holding q (created if needed), to be indexed by index_in_block.
-    T* block_of(glm::ivec3 q) {
+    GEOLAB_INLINE T* block_of(glm::ivec3 q) {
         const std::uint64_t key = block_key(q);
         if (key != last_.key) find_block(key, true);
         return last_.block;
@@ -394,7 +403,7 @@ public:
         return spherical_lattice_point(q);
     }
     //! f at a lattice point, evaluated once and cached under canonical(q) (the cache is mutable: not thread-safe).
-    double value(glm::ivec3 q) const {
+    GEOLAB_INLINE double value(glm::ivec3 q) const {
         double& v = cache_slot(canonical(q));
         if (v != v) v = sample(q);  // NaN: not sampled yet
         return v;
@@ -402,7 +411,10 @@ public:
     //! f at lattice point q, evaluated now and NOT cached (counted in samples()). For a point that is likely needed
     //! once, such as the centre tested by the refinement of a cell that may stay a leaf: caching it would cost a
     //! cache block for one value. Hand the value to store() if it turns out to be needed again.
-    double sample(glm::ivec3 q) const;
+    GEOLAB_INLINE double sample(glm::ivec3 q) const {
+        ++samples_;
+        return field->value(lattice_point(q));
+    }
     //! Put v = f(q) into the cache, as value(q) would have (v must be what sample(q) returned).
     void store(glm::ivec3 q, double v) { cache_slot(canonical(q)) = v; }
     //! The samples at the 27 points base + (i, j, k), i, j, k ∈ {0, 1, 2}, into out[i + 3j + 9k]: value() of each,
@@ -459,7 +471,7 @@ private:
     // leaves are sparse: sharing blocks with the finest band, each of their corners would take a block of its own.
     mutable BlockGrid<double> cache_{std::numeric_limits<double>::quiet_NaN()};
     mutable BlockGrid<double> even_cache_{std::numeric_limits<double>::quiet_NaN()};
-    double& cache_slot(glm::ivec3 qc) const {  // qc canonical
+    GEOLAB_INLINE double& cache_slot(glm::ivec3 qc) const {  // qc canonical
         if ((qc.x | qc.y | qc.z) & 1) return cache_.slot(qc);
         return even_cache_.slot(glm::ivec3(qc.x >> 1, qc.y >> 1, qc.z >> 1));
     }
