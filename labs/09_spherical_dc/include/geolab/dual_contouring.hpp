@@ -134,9 +134,9 @@ private:
 };
 
 //! The parameter t ∈ [0, 1] where g changes from one side to the other, given g0 = g(0) and g1 = g(1) on
-//! different sides (inside(g0) != inside(g1)). Use a bracketing method (bisection, or the Illinois variant of
-//! regula falsi, which is exact in one step on linear g): keep the bracket [t0, t1] with inside(g(t0)) ==
-//! inside(g0), and stop when the bracket is shorter than `tolerance` or when an iterate moves by less than
+//! different sides (inside(g0) != inside(g1)). Use a bracketing method (bisection, or regula falsi with the
+//! Illinois or Anderson–Björck correction, exact in one step on linear g): keep the bracket [t0, t1] with
+//! inside(g(t0)) == inside(g0), and stop when the bracket is shorter than `tolerance` or when an iterate moves by less than
 //! tolerance/8. At most 100 evaluations of g. \pre inside(g0) != inside(g1), tolerance > 0.
 double find_root(FunctionRef g, double g0, double g1, double tolerance);
 
