@@ -27,7 +27,8 @@ struct PolygonSoup {
     //! Append a face given by its vertex indices; returns its index.
     std::size_t add_face(std::initializer_list<std::uint32_t> vs) { return add_face(std::span(vs.begin(), vs.size())); }
     std::size_t add_face(std::span<const std::uint32_t> vs) {
-        indices.insert(indices.end(), vs.begin(), vs.end());
+        // Speed: faces are short; element-wise appends beat insert()'s general range copy (a memmove call a face)
+        for (std::uint32_t v : vs) indices.push_back(v);
         offsets.push_back(static_cast<std::uint32_t>(indices.size()));
         return n_faces() - 1;
     }
