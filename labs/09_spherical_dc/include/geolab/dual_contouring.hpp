@@ -48,10 +48,12 @@
 //! Speed: forces inlining of the few small functions on the hottest paths (block look-ups of the lattice grids). Left
 //! to itself the compiler keeps them out of line in large callers, and a glm::ivec3 passed by value is then packed
 //! into registers through memory, a store-forwarding stall at each call.
+#ifndef GEOLAB_INLINE
 #if defined(__GNUC__)
 #define GEOLAB_INLINE inline __attribute__((always_inline))
 #else
 #define GEOLAB_INLINE inline
+#endif
 #endif
 
 namespace geolab::dc {
