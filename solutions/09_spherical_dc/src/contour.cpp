@@ -76,6 +76,18 @@ constexpr std::array<EdgeList, 256> make_edge_lists() {
     return out;
 }
 constexpr std::array<EdgeList, 256> changing_edges = make_edge_lists();
+// the offset (i, j, k) of sub-lattice point p = i + 3j + 9k
+// (a table: computing the three ints on the fly made the compiler spill and reload them at a stall)
+struct SubOffsets {
+    int ijk[27][3] = {};
+};
+constexpr SubOffsets make_sub_offsets() {
+    SubOffsets t;
+    for (int p = 0; p < 27; ++p) t.ijk[p][0] = p % 3, t.ijk[p][1] = (p / 3) % 3, t.ijk[p][2] = p / 9;
+    return t;
+}
+constexpr SubOffsets sub_offsets = make_sub_offsets();
+glm::ivec3 sub_offset(int p) { return {sub_offsets.ijk[p][0], sub_offsets.ijk[p][1], sub_offsets.ijk[p][2]}; }
 // Speed: the sign tests of simplify as tables. point[child][c]: the sub-lattice point (i + 3j + 9k, i, j, k ∈ {0,1,2})
 // of the parent that is corner c of child `child` (so point[c][c] is the parent's corner c). single_sheet[m]: the
 // parent corners inside (bit c of m) and those outside are each connected through cube edges.
@@ -116,7 +128,7 @@ constexpr SimplifyTables make_simplify_tables() {
     for (int p = 0; p < 27; ++p) {
         // the parent corners of the feature p is the centre of (each coordinate 1 replaced by 0 or 2): an edge, a
         // face or the cell; a corner of the parent is its own feature
-        const int ijk[3] = {p % 3, (p / 3) % 3, p / 9};
+        const int* ijk = sub_offsets.ijk[p];
         int corners = 0;
         for (int c = 0; c < 8; ++c) {
             bool on = true;
@@ -136,23 +148,11 @@ constexpr SimplifyTables simplify_tables = make_simplify_tables();
 // the points from which an edge along axis a leaves (coordinate a is 0 or 1); interior_edges[a]: those whose edge
 // lies inside the parent (the other two coordinates are 1), shared by no other parent.
 constexpr std::uint32_t all_sub_points = (1u << 27) - 1;
-// the offset (i, j, k) of sub-lattice point p = i + 3j + 9k
-// (a table: computing the three ints on the fly made the compiler spill and reload them at a stall)
-struct SubOffsets {
-    int ijk[27][3] = {};
-};
-constexpr SubOffsets make_sub_offsets() {
-    SubOffsets t;
-    for (int p = 0; p < 27; ++p) t.ijk[p][0] = p % 3, t.ijk[p][1] = (p / 3) % 3, t.ijk[p][2] = p / 9;
-    return t;
-}
-constexpr SubOffsets sub_offsets = make_sub_offsets();
-glm::ivec3 sub_offset(int p) { return {sub_offsets.ijk[p][0], sub_offsets.ijk[p][1], sub_offsets.ijk[p][2]}; }
 constexpr std::array<std::uint32_t, 3> sub_lattice_sets(bool interior) {
     std::array<std::uint32_t, 3> out{};
     for (int a = 0; a < 3; ++a)
         for (int p = 0; p < 27; ++p) {
-            const int ijk[3] = {p % 3, (p / 3) % 3, p / 9};
+            const int* ijk = sub_offsets.ijk[p];
             if (ijk[a] == 2) continue;
             if (interior && (ijk[(a + 1) % 3] != 1 || ijk[(a + 2) % 3] != 1)) continue;
             out[a] |= 1u << p;
@@ -174,7 +174,8 @@ constexpr GroupEdges make_group_edges() {
     GroupEdges out{};
     for (int a = 0; a < 3; ++a)
         for (int p = 0; p < 27; ++p) {
-            const int o[3] = {p % 3, (p / 3) % 3, p / 9}, b = (a + 1) % 3, cax = (a + 2) % 3;
+            const int* o = sub_offsets.ijk[p];
+            const int b = (a + 1) % 3, cax = (a + 2) % 3;
             GroupEdge& g = out[a][p];
             for (int k = 0; k < 4; ++k) {
                 int l[3] = {o[0], o[1], o[2]};
@@ -193,6 +194,14 @@ constexpr GroupEdges make_group_edges() {
     return out;
 }
 constexpr GroupEdges group_edges = make_group_edges();
+// Whether node nd's 8 children are finest leaves (a group of finest siblings): nd is of level L − 1 and not a leaf,
+// and none of its children has children.
+bool has_finest_children(const Octree& tree, const OctreeNode& nd) {
+    if (nd.is_leaf() || nd.level + 1 != tree.max_level) return false;
+    for (int c = 0; c < 8; ++c)
+        if (!tree.nodes[nd.first_child + c].is_leaf()) return false;
+    return true;
+}
 }  // namespace
 // END SOLUTION
 
@@ -342,11 +351,9 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params) {
             coarse_leaf(n);
             return false;
         }
-        const std::uint32_t first = nd.first_child;
-        bool finest_children = nd.level + 1 == tree.max_level;
-        for (int c = 0; c < 8 && finest_children; ++c) finest_children = tree.nodes[first + c].is_leaf();
-        if (finest_children) finest_group(first);
-        return !finest_children;
+        if (!has_finest_children(tree, nd)) return true;
+        finest_group(nd.first_child);
+        return false;
     });
     return crossings;
     // END SOLUTION
@@ -470,10 +477,8 @@ PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles) {
             others.push_back(n);
             return false;
         }
+        if (!has_finest_children(tree, nd)) return true;
         const std::uint32_t first = nd.first_child;
-        if (nd.level + 1 != tree.max_level) return true;
-        for (int c = 0; c < 8; ++c)
-            if (!tree.nodes[first + c].is_leaf()) return true;
         // the 8 siblings' cells (2x, 2y, 2z) + {0, 1}³ are 8 slots of one block
         std::uint32_t* slots = finest.block_of({2 * nd.x, 2 * nd.y, 2 * nd.z});
         for (int c = 0; c < 8; ++c) {
