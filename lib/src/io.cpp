@@ -11,6 +11,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <glm/geometric.hpp>
 #include <limits>
@@ -18,9 +19,13 @@
 #include <optional>
 #include <stdexcept>
 #include <string_view>
-#include <unordered_map>
+#include <tuple>
 #include <utility>
 #include <vector>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 namespace geolab {
 namespace {
@@ -33,6 +38,13 @@ constexpr std::uint64_t max_index = std::numeric_limits<Index>::max();
 // ================================================================================================================
 
 bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v' || c == '\n'; }
+
+// Keywords are matched in any case, in every reader ("SOLID", "Facet", "off", "PLY").
+bool iequals(std::string_view a, std::string_view b) {
+    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+               return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
+           });
+}
 
 std::string lowercase(std::string s) {
     std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
@@ -84,15 +96,23 @@ public:
     //! Parses `text` from byte `start`, whose line is `first_line`; `comment` starts a comment ('\0': none).
     TextParser(std::string_view text, const std::string& name, char comment, std::size_t start = 0,
                std::size_t first_line = 1)
-        : text_(text), name_(name), next_(start), line_(first_line - 1), comment_(comment) {}
+        : text_(text),
+          name_(name),
+          next_(start),
+          lf_(std::min(text.find('\n', start), text.size())),
+          cr_(std::min(text.find('\r', start), text.size())),
+          line_(first_line - 1),
+          comment_(comment) {}
 
-    //! Moves to the next line holding a token; false at the end of the text.
+    //! Moves to the next line holding a token; false at the end of the text. A line ends with LF, CRLF or a
+    //! lone CR; the positions of the next LF and CR are cached, so the scan is linear whichever is used.
     bool next_line() {
         while (next_ < text_.size()) {
-            std::size_t end = text_.find('\n', next_);
-            if (end == std::string_view::npos) end = text_.size();
+            if (lf_ < next_) lf_ = std::min(text_.find('\n', next_), text_.size());
+            if (cr_ < next_) cr_ = std::min(text_.find('\r', next_), text_.size());
+            const std::size_t end = std::min(lf_, cr_);
             rest_ = text_.substr(next_, end - next_);
-            next_ = end + 1;
+            next_ = end + (end == cr_ && end + 1 == lf_ ? 2 : 1);  // CRLF is one line end
             ++line_;
             if (comment_ != '\0') rest_ = rest_.substr(0, rest_.find(comment_));
             skip_spaces();
@@ -177,6 +197,7 @@ private:
     std::string_view text_;
     const std::string& name_;
     std::size_t next_;  // start of the next line
+    std::size_t lf_, cr_;  // the next '\n' and '\r' at or after next_ (text_.size() when none)
     std::string_view rest_;
     std::size_t line_;
     char comment_;
@@ -189,13 +210,13 @@ private:
 // Reads the optional header keyword ([ST][C][N][4][n]OFF). Returns false when the file starts with the counts.
 bool read_off_keyword(TextParser& in) {
     std::string_view key = in.peek();
-    if (key.size() < 3 || key.substr(key.size() - 3) != "OFF") return false;
+    if (key.size() < 3 || !iequals(key.substr(key.size() - 3), "OFF")) return false;
     in.token();
     std::string_view prefix = key.substr(0, key.size() - 3);
     if (prefix.find('4') != std::string_view::npos || prefix.find('n') != std::string_view::npos)
         in.fail("unsupported OFF variant " + quote(key) + " (only 3D vertices are read)");
     if (prefix.find_first_not_of("STCN") != std::string_view::npos) in.fail("unknown OFF header " + quote(key));
-    if (in.peek() == "BINARY") in.fail("binary OFF is not supported");
+    if (iequals(in.peek(), "BINARY")) in.fail("binary OFF is not supported");
     return true;
 }
 
@@ -263,7 +284,7 @@ bool is_ignored_obj_statement(std::string_view key) {
         "vt",     "vn",  "vp",   "l",     "p",        "g",        "o",    "s",          "mg",        "usemtl", "mtllib",
         "cstype", "deg", "bmat", "step",  "curv",     "curv2",    "surf", "parm",       "trim",      "hole",   "scrv",
         "sp",     "end", "con",  "bevel", "c_interp", "d_interp", "lod",  "shadow_obj", "trace_obj", "ctech",  "stech"};
-    return std::find(known.begin(), known.end(), key) != known.end();
+    return std::any_of(known.begin(), known.end(), [&](std::string_view k) { return iequals(k, key); });
 }
 
 // One corner of an `f` statement: `i`, `i/t`, `i//n` or `i/t/n`; negative i counts back from the last vertex.
@@ -298,12 +319,12 @@ PolygonSoup read_obj(std::string_view text, const std::string& name) {
     PolygonSoup soup;
     while (in.next_line()) {
         std::string_view key = in.token();
-        if (key == "v") {
+        if (iequals(key, "v")) {
             double x = in.real("vertex x"), y = in.real("vertex y"), z = in.real("vertex z");
             in.skip_numbers("the vertex coordinates");  // w or a colour
             if (soup.positions.size() == max_index) in.fail("too many vertices");
             soup.positions.emplace_back(x, y, z);
-        } else if (key == "f") {
+        } else if (iequals(key, "f")) {
             read_obj_face(in, soup);
         } else if (!is_ignored_obj_statement(key)) {
             in.fail("unknown OBJ statement " + quote(key));
@@ -320,15 +341,22 @@ PolygonSoup read_obj(std::string_view text, const std::string& name) {
 enum class PlyType { int8, uint8, int16, uint16, int32, uint32, float32, float64 };
 
 std::optional<PlyType> ply_type(std::string_view s) {
-    if (s == "char" || s == "int8") return PlyType::int8;
-    if (s == "uchar" || s == "uint8") return PlyType::uint8;
-    if (s == "short" || s == "int16") return PlyType::int16;
-    if (s == "ushort" || s == "uint16") return PlyType::uint16;
-    if (s == "int" || s == "int32") return PlyType::int32;
-    if (s == "uint" || s == "uint32") return PlyType::uint32;
-    if (s == "float" || s == "float32") return PlyType::float32;
-    if (s == "double" || s == "float64") return PlyType::float64;
+    static constexpr std::array<std::pair<std::string_view, PlyType>, 16> names = {{
+        {"char", PlyType::int8},     {"int8", PlyType::int8},       {"uchar", PlyType::uint8},
+        {"uint8", PlyType::uint8},   {"short", PlyType::int16},     {"int16", PlyType::int16},
+        {"ushort", PlyType::uint16}, {"uint16", PlyType::uint16},   {"int", PlyType::int32},
+        {"int32", PlyType::int32},   {"uint", PlyType::uint32},     {"uint32", PlyType::uint32},
+        {"float", PlyType::float32}, {"float32", PlyType::float32}, {"double", PlyType::float64},
+        {"float64", PlyType::float64}}};
+    for (auto [name, type] : names)
+        if (iequals(s, name)) return type;
     return std::nullopt;
+}
+
+std::string_view type_name(PlyType t) {
+    static constexpr std::array<std::string_view, 8> names = {"int8",  "uint8",  "int16",   "uint16",
+                                                              "int32", "uint32", "float32", "float64"};
+    return names[static_cast<std::size_t>(t)];
 }
 
 std::size_t size_of(PlyType t) {
@@ -380,11 +408,12 @@ void read_ply_property(TextParser& in, PlyHeader& h) {
     if (h.elements.empty()) in.fail("property before any element");
     PlyProperty p;
     std::string_view type = in.token();
-    if (type == "list") {
+    if (iequals(type, "list")) {
         p.is_list = true;
         std::string_view count_type = in.token();
         auto ct = ply_type(count_type);
-        if (!ct || !is_integer(*ct)) in.fail("bad list count type " + quote(count_type));
+        if (!ct || !is_integer(*ct))
+            in.fail("bad list count type " + quote(count_type) + " (an integer type is needed)");
         p.count_type = *ct;
         type = in.token();
     }
@@ -393,31 +422,41 @@ void read_ply_property(TextParser& in, PlyHeader& h) {
     p.type = *t;
     p.name = std::string(in.token());
     if (p.name.empty()) in.fail("property without a name");
-    h.elements.back().properties.push_back(std::move(p));
+    PlyElement& e = h.elements.back();
+    for (const PlyProperty& q : e.properties)
+        if (q.name == p.name) in.fail("element '" + e.name + "' declares property '" + p.name + "' twice");
+    if (e.name == "face" && is_face_list(p) && !is_integer(p.type))
+        in.fail("face vertex indices must have an integer type, not " + std::string(type_name(p.type)));
+    e.properties.push_back(std::move(p));
 }
 
 void read_ply_header_line(TextParser& in, PlyHeader& h) {
     std::string_view key = in.token();
-    if (key == "comment" || key == "obj_info") {
+    if (iequals(key, "comment") || iequals(key, "obj_info")) {
         in.rest_of_line();
-    } else if (key == "format") {
+    } else if (iequals(key, "format")) {
         std::string_view f = in.token();
-        if (f == "ascii")
+        if (iequals(f, "ascii"))
             h.format = MeshFormat::ply_ascii;
-        else if (f == "binary_little_endian")
+        else if (iequals(f, "binary_little_endian"))
             h.format = MeshFormat::ply_binary_le;
-        else if (f == "binary_big_endian")
+        else if (iequals(f, "binary_big_endian"))
             h.format = MeshFormat::ply_binary_be;
         else
             in.fail("unknown PLY format " + quote(f));
         in.rest_of_line();  // version
-    } else if (key == "element") {
+    } else if (iequals(key, "element")) {
         PlyElement e;
         e.name = std::string(in.token());
+        if (e.name.empty()) in.fail("element without a name");
+        for (const PlyElement& seen : h.elements)
+            if (seen.name == e.name)
+                in.fail("element '" + e.name + "' declared twice (first on line " + std::to_string(seen.line) +
+                        "): each element may be declared once");
         e.count = in.count("element count of '" + e.name + "'");
         e.line = in.line();
         h.elements.push_back(std::move(e));
-    } else if (key == "property") {
+    } else if (iequals(key, "property")) {
         read_ply_property(in, h);
     } else {
         in.fail("unknown PLY header line starting with " + quote(key));
@@ -467,13 +506,14 @@ void check_ply_header(const TextParser& in, const PlyHeader& h, std::size_t file
 
 PlyHeader read_ply_header(std::string_view text, const std::string& name) {
     TextParser in(text, name, '\0');
-    if (!in.next_line() || in.token() != "ply" || !in.at_line_end()) in.fail("not a PLY file (no 'ply' magic line)");
+    if (!in.next_line() || !iequals(in.token(), "ply") || !in.at_line_end())
+        in.fail("not a PLY file (no 'ply' magic line)");
     PlyHeader h;
     bool has_format = false;
     while (true) {
         if (!in.next_line()) in.fail("unexpected end of file in the header (no end_header)");
-        if (in.peek() == "end_header") break;
-        has_format = has_format || in.peek() == "format";
+        if (iequals(in.peek(), "end_header")) break;
+        has_format = has_format || iequals(in.peek(), "format");
         read_ply_header_line(in, h);
         if (!in.at_line_end()) in.fail("unexpected " + quote(in.token()) + " in the header");
     }
@@ -489,7 +529,11 @@ class PlyAsciiReader {
 public:
     PlyAsciiReader(std::string_view text, const std::string& name, const PlyHeader& h)
         : in_(text, name, '\0', h.body_offset, h.body_line) {}
-    void begin(const std::string&, std::uint64_t) {}
+    //! Names the element being read, for errors at the end of the file.
+    void begin(const PlyElement& element, std::uint64_t index) {
+        element_ = &element;
+        index_ = index;
+    }
     double real(PlyType) { return in_.check_real(next("a number"), "coordinate"); }
     std::int64_t integer(PlyType, std::string_view what) { return in_.check_int(next(what), what); }
     void skip(const PlyProperty& p) {
@@ -512,11 +556,14 @@ private:
     std::string_view next(std::string_view what) {
         std::string_view t = in_.token_any_line();
         if (t.empty())
-            in_.fail("unexpected end of file: expected " + std::string(what) +
-                     " (fewer elements than the header says)");
+            in_.fail("unexpected end of file: expected " + std::string(what) + " of element " + element_->name +
+                     " " + std::to_string(index_) + " (the header declares " + std::to_string(element_->count) +
+                     ", the file is truncated)");
         return t;
     }
     TextParser in_;
+    const PlyElement* element_ = nullptr;
+    std::uint64_t index_ = 0;
 };
 
 // Reads the body of a binary PLY, swapping bytes when the file's endianness differs from the machine's.
@@ -528,7 +575,7 @@ public:
           pos_(h.body_offset),
           swap_((h.format == MeshFormat::ply_binary_le) != (std::endian::native == std::endian::little)) {}
     //! Names the element being read, for errors.
-    void begin(const std::string& element, std::uint64_t index) {
+    void begin(const PlyElement& element, std::uint64_t index) {
         element_ = &element;
         index_ = index;
     }
@@ -537,7 +584,10 @@ public:
         if (!std::isfinite(v)) fail("coordinate is not finite");
         return v;
     }
-    std::int64_t integer(PlyType t, std::string_view) { return static_cast<std::int64_t>(load(t)); }
+    std::int64_t integer(PlyType t, std::string_view what) {
+        if (!is_integer(t)) fail(std::string(what) + " has the non-integer type " + std::string(type_name(t)));
+        return static_cast<std::int64_t>(load(t));  // exact: every integer PLY type fits
+    }
     std::uint64_t count(PlyType t, std::string_view what) {
         std::int64_t n = integer(t, what);
         if (n < 0) fail(std::string(what) + " is negative");
@@ -545,7 +595,10 @@ public:
     }
     void skip(const PlyProperty& p) {
         std::uint64_t n = p.is_list ? count(p.count_type, "list count") : 1;
-        if (n > (data_.size() - pos_) / size_of(p.type)) fail("unexpected end of data (truncated file)");
+        if (n > (data_.size() - pos_) / size_of(p.type))
+            fail("unexpected end of data: property '" + p.name + "' needs " + std::to_string(n * size_of(p.type)) +
+                 " bytes at byte " + std::to_string(pos_) + ", the file has " + std::to_string(data_.size()) +
+                 " bytes (truncated file)");
         pos_ += n * size_of(p.type);
     }
     void finish() {
@@ -554,16 +607,18 @@ public:
                           std::to_string(data_.size() - pos_) + " bytes of unexpected data after the last element");
     }
     [[noreturn]] void fail(const std::string& reason) const {
-        throw IoError(
-            name_, 0,
-            "element " + (element_ ? *element_ : std::string("?")) + " " + std::to_string(index_) + ": " + reason);
+        throw IoError(name_, 0,
+                      "element " + (element_ ? element_->name : std::string("?")) + " " + std::to_string(index_) +
+                          ": " + reason);
     }
 
 private:
     // One value of type t, byte-swapped as needed, widened to double (exact for every PLY type).
     double load(PlyType t) {
         std::size_t n = size_of(t);
-        if (data_.size() - pos_ < n) fail("unexpected end of data (truncated file)");
+        if (data_.size() - pos_ < n)
+            fail("unexpected end of data: expected a value of type " + std::string(type_name(t)) + " at byte " +
+                 std::to_string(pos_) + ", the file has " + std::to_string(data_.size()) + " bytes (truncated file)");
         std::array<unsigned char, 8> b{};
         std::memcpy(b.data(), data_.data() + pos_, n);
         pos_ += n;
@@ -599,7 +654,7 @@ private:
     const std::string& name_;
     std::size_t pos_;
     bool swap_;
-    const std::string* element_ = nullptr;
+    const PlyElement* element_ = nullptr;
     std::uint64_t index_ = 0;
 };
 
@@ -611,7 +666,7 @@ void read_ply_vertices(Reader& in, const PlyElement& e, PolygonSoup& soup) {
             axis[k] = e.properties[k].name[0] - 'x';
     soup.positions.reserve(e.count);
     for (std::uint64_t v = 0; v < e.count; ++v) {
-        in.begin(e.name, v);
+        in.begin(e, v);
         glm::dvec3 p{0.0};
         for (std::size_t k = 0; k < e.properties.size(); ++k) {
             if (axis[k] >= 0)
@@ -644,7 +699,7 @@ void read_ply_faces(Reader& in, const PlyElement& e, std::uint64_t nv, PolygonSo
     soup.indices.reserve(3 * e.count);
     bool seen = false;  // only the first index list is the face; any other list is skipped
     for (std::uint64_t f = 0; f < e.count; ++f) {
-        in.begin(e.name, f);
+        in.begin(e, f);
         seen = false;
         for (const PlyProperty& p : e.properties) {
             if (is_face_list(p) && !seen) {
@@ -668,7 +723,7 @@ PolygonSoup read_ply_body(Reader in, const PlyHeader& h) {
             read_ply_faces(in, e, nv, soup);
         } else if (!e.properties.empty()) {  // skip other elements (with no properties there is nothing to skip)
             for (std::uint64_t i = 0; i < e.count; ++i) {
-                in.begin(e.name, i);
+                in.begin(e, i);
                 for (const PlyProperty& p : e.properties) in.skip(p);
             }
         }
@@ -687,39 +742,61 @@ PolygonSoup read_ply(std::string_view data, const std::string& name) {
 // STL
 // ================================================================================================================
 
-// Welds identical corner positions into one vertex (STL stores every triangle corner separately).
+// Welds identical corner positions into one vertex (STL stores every triangle corner separately). Sort-based:
+// the corners are sorted by (position bits, corner), so equal positions form runs and the first corner of a run
+// names the vertex. O(n log n) for any input: unlike a hash table, no choice of coordinates can make it slow.
 class Welder {
 public:
-    explicit Welder(PolygonSoup& soup) : soup_(soup) {}
-    Index add(glm::vec3 p) {
+    //! Records the next corner (its index is the number of corners added before it).
+    void add(glm::vec3 p) {
         p += glm::vec3(0.0f);  // -0 becomes +0, so the two weld
-        auto [it, inserted] = index_.try_emplace(Key{p.x, p.y, p.z}, static_cast<Index>(soup_.positions.size()));
-        if (inserted) soup_.positions.emplace_back(p);
-        return it->second;
+        corners_.push_back({std::bit_cast<std::uint32_t>(p.x), std::bit_cast<std::uint32_t>(p.y),
+                            std::bit_cast<std::uint32_t>(p.z), static_cast<Index>(corners_.size())});
     }
-    void reserve(std::size_t corners) { index_.reserve(corners / 4); }
+    void reserve(std::size_t corners) { corners_.reserve(corners); }
+    std::size_t size() const { return corners_.size(); }
+    //! Appends one position per distinct corner position to soup.positions, numbered in order of first use, and
+    //! the vertex of every corner, in order, to soup.indices.
+    void finish(PolygonSoup& soup) {
+        const std::size_t n = corners_.size(), base = soup.indices.size();
+        std::sort(corners_.begin(), corners_.end());
+        soup.indices.resize(base + n);
+        Index* first = soup.indices.data() + base;  // first[c]: the first corner with c's position
+        for (std::size_t i = 0; i < n; ++i)
+            first[corners_[i].corner] = i > 0 && corners_[i].same_position(corners_[i - 1])
+                                            ? first[corners_[i - 1].corner]
+                                            : corners_[i].corner;
+        std::vector<Corner> by_corner(n);  // positions again, by corner, to number the vertices in corner order
+        for (const Corner& c : corners_) by_corner[c.corner] = c;
+        corners_ = {};
+        for (std::size_t c = 0; c < n; ++c) {
+            if (first[c] == c) {  // first use of this position: a new vertex
+                const Corner& k = by_corner[c];
+                soup.positions.emplace_back(std::bit_cast<float>(k.x), std::bit_cast<float>(k.y),
+                                            std::bit_cast<float>(k.z));
+                first[c] = static_cast<Index>(soup.positions.size() - 1);
+            } else {
+                first[c] = first[first[c]];  // first[c] < c is already a vertex number
+            }
+        }
+    }
 
 private:
-    struct Key {
-        float x, y, z;
-        bool operator==(const Key& o) const { return x == o.x && y == o.y && z == o.z; }
-    };
-    struct Hash {
-        std::size_t operator()(const Key& k) const {
-            std::uint64_t h = std::bit_cast<std::uint32_t>(k.x);
-            h = h * 0x9E3779B97F4A7C15ull ^ std::bit_cast<std::uint32_t>(k.y);
-            h = h * 0x9E3779B97F4A7C15ull ^ std::bit_cast<std::uint32_t>(k.z);
-            return static_cast<std::size_t>(h ^ (h >> 29));
+    struct Corner {
+        std::uint32_t x, y, z;  // the float bits
+        Index corner;
+        bool same_position(const Corner& o) const { return x == o.x && y == o.y && z == o.z; }
+        bool operator<(const Corner& o) const {
+            return std::tie(x, y, z, corner) < std::tie(o.x, o.y, o.z, o.corner);
         }
     };
-    PolygonSoup& soup_;
-    std::unordered_map<Key, Index, Hash> index_;
+    std::vector<Corner> corners_;
 };
 
 void expect_keyword(TextParser& in, std::string_view word) {
     std::string_view t = in.token_any_line();
-    if (t.empty()) in.fail("unexpected end of file: expected '" + std::string(word) + "'");
-    if (t != word) in.fail("expected '" + std::string(word) + "', found " + quote(t));
+    if (t.empty()) in.fail("unexpected end of file: expected '" + std::string(word) + "' (truncated file)");
+    if (!iequals(t, word)) in.fail("expected '" + std::string(word) + "', found " + quote(t));
 }
 
 float stl_coordinate(TextParser& in) {
@@ -729,6 +806,7 @@ float stl_coordinate(TextParser& in) {
 }
 
 void read_stl_facet(TextParser& in, std::size_t facet, Welder& weld, PolygonSoup& soup) {
+    if (weld.size() + 3 > max_index) in.fail("too many triangles");
     expect_keyword(in, "normal");
     for (int k = 0; k < 3; ++k)  // the normal is recomputed by whoever needs it
         if (!to_double(in.token_any_line())) in.fail("malformed normal of facet " + std::to_string(facet));
@@ -738,28 +816,29 @@ void read_stl_facet(TextParser& in, std::size_t facet, Welder& weld, PolygonSoup
         expect_keyword(in, "vertex");
         glm::vec3 p;
         for (int k = 0; k < 3; ++k) p[k] = stl_coordinate(in);
-        soup.indices.push_back(weld.add(p));
+        weld.add(p);
     }
     expect_keyword(in, "endloop");
     expect_keyword(in, "endfacet");
-    soup.offsets.push_back(static_cast<Index>(soup.indices.size()));
+    soup.offsets.push_back(static_cast<Index>(weld.size()));
 }
 
 PolygonSoup read_stl_ascii(std::string_view text, const std::string& name) {
     TextParser in(text, name, '\0');
-    if (!in.next_line() || in.token() != "solid") in.fail("not an ascii STL file (no 'solid' line)");
+    if (!in.next_line() || !iequals(in.token(), "solid")) in.fail("not an ascii STL file (no 'solid' line)");
     in.rest_of_line();  // the solid's name
     PolygonSoup soup;
-    Welder weld(soup);
+    Welder weld;
     for (std::size_t facet = 0;; ++facet) {
         std::string_view t = in.token_any_line();
-        if (t == "endsolid") break;
-        if (t.empty()) in.fail("unexpected end of file (no 'endsolid')");
-        if (t != "facet") in.fail("expected 'facet' or 'endsolid', found " + quote(t));
+        if (iequals(t, "endsolid")) break;
+        if (t.empty()) in.fail("unexpected end of file: expected 'facet' or 'endsolid' (truncated file)");
+        if (!iequals(t, "facet")) in.fail("expected 'facet' or 'endsolid', found " + quote(t));
         read_stl_facet(in, facet, weld, soup);
     }
     in.rest_of_line();
     if (in.next_line()) in.fail("unexpected data after 'endsolid'");
+    weld.finish(soup);
     return soup;
 }
 
@@ -773,13 +852,15 @@ std::uint32_t load_u32_le(const char* p) {
 
 float load_f32_le(const char* p) { return std::bit_cast<float>(load_u32_le(p)); }
 
-bool is_binary_stl(std::string_view data) {
+// Binary when the size matches the triangle count; otherwise ascii if the text (after a BOM and spaces) starts
+// with "solid" in any case.
+bool is_binary_stl(std::string_view data, std::string_view text) {
     if (data.size() >= stl_header_bytes &&
         stl_header_bytes + stl_triangle_bytes * std::uint64_t(load_u32_le(data.data() + 80)) == data.size())
         return true;
     std::size_t start = 0;
-    while (start < data.size() && is_space(data[start])) ++start;
-    return data.substr(start, 5) != "solid";
+    while (start < text.size() && is_space(text[start])) ++start;
+    return !iequals(text.substr(start, 5), "solid");
 }
 
 PolygonSoup read_stl_binary(std::string_view data, const std::string& name) {
@@ -796,10 +877,10 @@ PolygonSoup read_stl_binary(std::string_view data, const std::string& name) {
                           std::to_string(data.size()) + " bytes (" +
                           (expected > data.size() ? "truncated" : "extra data") + ")");
     }
+    if (3 * n > max_index) throw IoError(name, 0, "too many triangles (" + std::to_string(n) + ")");
     PolygonSoup soup;
-    Welder weld(soup);
+    Welder weld;
     weld.reserve(3 * n);
-    soup.indices.reserve(3 * n);
     soup.offsets.reserve(n + 1);
     for (std::uint64_t t = 0; t < n; ++t) {
         const char* corner = data.data() + stl_header_bytes + t * stl_triangle_bytes + 12;  // past the normal
@@ -807,10 +888,11 @@ PolygonSoup read_stl_binary(std::string_view data, const std::string& name) {
             glm::vec3 p(load_f32_le(corner), load_f32_le(corner + 4), load_f32_le(corner + 8));
             if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
                 throw IoError(name, 0, "element " + std::to_string(t) + ": triangle has a non-finite coordinate");
-            soup.indices.push_back(weld.add(p));
+            weld.add(p);
         }
-        soup.offsets.push_back(static_cast<Index>(soup.indices.size()));
+        soup.offsets.push_back(static_cast<Index>(weld.size()));
     }
+    weld.finish(soup);
     return soup;
 }
 
@@ -978,17 +1060,56 @@ void write_file(const std::filesystem::path& path, const std::string& data) {
         throw IoError(path.string(), 0, std::string("write failed: ") + std::strerror(errno));
 }
 
-std::string read_file(const std::filesystem::path& path) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) throw IoError(path.string(), 0, "is a directory, not a mesh file");
-    std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
-    if (!f) throw IoError(path.string(), 0, std::string("cannot open: ") + std::strerror(errno));
-    std::string data;
-    char buffer[1 << 16];
-    std::uintmax_t size = std::filesystem::file_size(path, ec);
-    if (!ec) data.reserve(size);
-    for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, f.get())) > 0;) data.append(buffer, n);
-    if (std::ferror(f.get())) throw IoError(path.string(), 0, std::string("read failed: ") + std::strerror(errno));
+// What a file that is not a regular file is, for the error message.
+std::string file_kind(mode_t mode) {
+    if (S_ISFIFO(mode)) return "a FIFO (named pipe)";
+    if (S_ISCHR(mode)) return "a character device";
+    if (S_ISBLK(mode)) return "a block device";
+    if (S_ISSOCK(mode)) return "a socket";
+    return "not a regular file";
+}
+
+std::string mebibytes(std::uint64_t bytes) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.1f MiB", static_cast<double>(bytes) / (1 << 20));
+    return buf;
+}
+
+[[noreturn]] void throw_too_large(const std::filesystem::path& path, std::string_view size, std::uint64_t max_bytes) {
+    throw IoError(path.string(), 0,
+                  "the file is " + std::string(size) + ", more than the limit of " + mebibytes(max_bytes) +
+                      " (raise it with the environment variable GEOLAB_MAX_FILE_MB, or geolab info --max-file-mb)");
+}
+
+// The whole file. Opened without blocking (a FIFO with no writer), then refused unless it is a regular file
+// (fstat on the open descriptor: a symlink to /dev/zero is a character device); never reads more than
+// max_bytes + 1 bytes, even from a file that grows while it is read.
+std::string read_file(const std::filesystem::path& path, std::uint64_t max_bytes) {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0) throw IoError(path.string(), 0, std::string("cannot open: ") + std::strerror(errno));
+    const std::unique_ptr<const int, void (*)(const int*)> closer(&fd, [](const int* f) { ::close(*f); });
+    struct stat st {};
+    if (::fstat(fd, &st) != 0) throw IoError(path.string(), 0, std::string("cannot stat: ") + std::strerror(errno));
+    if (S_ISDIR(st.st_mode)) throw IoError(path.string(), 0, "is a directory, not a mesh file");
+    if (!S_ISREG(st.st_mode))
+        throw IoError(path.string(), 0, "is " + file_kind(st.st_mode) + ", not a regular file: only files are read");
+    const auto size = static_cast<std::uint64_t>(st.st_size);
+    if (size > max_bytes) throw_too_large(path, mebibytes(size), max_bytes);
+    std::string data(size, '\0');
+    std::size_t have = 0;
+    while (true) {
+        if (have == data.size()) {  // the file may have grown since fstat: read on, up to the limit
+            if (have > max_bytes) throw_too_large(path, "larger than that (it grew while read)", max_bytes);
+            data.resize(std::min<std::uint64_t>(max_bytes + 1, have + (1 << 16)));
+        }
+        const ssize_t n = ::read(fd, data.data() + have, data.size() - have);
+        if (n < 0 && errno == EINTR) continue;
+        if (n < 0) throw IoError(path.string(), 0, std::string("read failed: ") + std::strerror(errno));
+        if (n == 0) break;
+        have += static_cast<std::size_t>(n);
+    }
+    if (have > max_bytes) throw_too_large(path, "larger than that (it grew while read)", max_bytes);
+    data.resize(have);
     return data;
 }
 
@@ -1015,25 +1136,47 @@ MeshFormat format_from_extension(const std::filesystem::path& path) {
                       " (expected .obj, .off, .ply or .stl)");
 }
 
-PolygonSoup read_mesh(const std::filesystem::path& path) {
+std::uint64_t default_max_file_bytes() {
+    constexpr std::uint64_t mib = 1 << 20, default_mib = 1024;
+    const char* env = std::getenv("GEOLAB_MAX_FILE_MB");
+    if (env == nullptr || *env == '\0') return default_mib * mib;
+    std::optional<std::int64_t> v = to_int(env);
+    if (!v || *v <= 0 || static_cast<std::uint64_t>(*v) > (std::uint64_t(1) << 40))
+        throw IoError("GEOLAB_MAX_FILE_MB", 0,
+                      "expected a positive whole number of MiB (at most 2^40), found " + quote(env));
+    return static_cast<std::uint64_t>(*v) * mib;
+}
+
+PolygonSoup read_mesh(const std::filesystem::path& path, const ReadOptions& options) {
     MeshFormat format = format_from_extension(path);
-    return read_mesh_from_string(read_file(path), format, path.string());
+    const std::uint64_t max_bytes = options.max_file_bytes ? options.max_file_bytes : default_max_file_bytes();
+    return read_mesh_from_string(read_file(path, max_bytes), format, path.string());
 }
 
 PolygonSoup read_mesh_from_string(const std::string& data, MeshFormat format, const std::string& name) {
-    if (data.find_first_not_of(" \t\r\n") == std::string::npos) throw IoError(name, 0, "empty file");
-    switch (format) {
-        case MeshFormat::obj:
-            return read_obj(data, name);
-        case MeshFormat::off:
-            return read_off(data, name);
-        case MeshFormat::ply_ascii:
-        case MeshFormat::ply_binary_le:
-        case MeshFormat::ply_binary_be:
-            return read_ply(data, name);  // the header names the encoding
-        case MeshFormat::stl_ascii:
-        case MeshFormat::stl_binary:
-            return is_binary_stl(data) ? read_stl_binary(data, name) : read_stl_ascii(data, name);
+    // Text starts after a UTF-8 byte order mark. A binary STL is tested on all its bytes (its 80-byte header is
+    // free text that may start with anything).
+    std::string_view text = data;
+    if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);
+    if (text.find_first_not_of(" \t\r\n") == std::string::npos) throw IoError(name, 0, "empty file");
+    try {
+        switch (format) {
+            case MeshFormat::obj:
+                return read_obj(text, name);
+            case MeshFormat::off:
+                return read_off(text, name);
+            case MeshFormat::ply_ascii:
+            case MeshFormat::ply_binary_le:
+            case MeshFormat::ply_binary_be:
+                return read_ply(text, name);  // the header names the encoding
+            case MeshFormat::stl_ascii:
+            case MeshFormat::stl_binary:
+                return is_binary_stl(data, text) ? read_stl_binary(data, name) : read_stl_ascii(text, name);
+        }
+    } catch (const std::bad_alloc&) {  // the readers bound their allocations by the file's size; this is a backstop
+        throw IoError(name, 0, "out of memory while reading a " + std::to_string(data.size()) + "-byte file");
+    } catch (const std::length_error& e) {
+        throw IoError(name, 0, std::string("too large to read: ") + e.what());
     }
     throw IoError(name, 0, "unknown mesh format");
 }

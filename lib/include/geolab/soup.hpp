@@ -37,7 +37,8 @@ struct PolygonSoup {
 };
 
 //! Throws std::invalid_argument naming the first face with an index out of range, fewer than 3 vertices,
-//! a repeated vertex, or the first position that is not finite.
+//! a repeated vertex, or the first position that is not finite. O(#positions + #indices), whatever the faces'
+//! sizes (a 1,000,000-vertex face is checked in linear time).
 void check_soup(const PolygonSoup& soup);
 
 }  // namespace geolab
