@@ -22,9 +22,9 @@ std::filesystem::path mesh_path(const std::string& arg) {
 }
 
 #ifdef GEOLAB_HAS_LAB_01
-int run_info(const std::string& arg, bool as_json) {
+int run_info(const std::string& arg, bool as_json, std::uint64_t max_file_mb) {
     const auto path = mesh_path(arg);
-    const PolygonSoup soup = read_mesh(path);
+    const PolygonSoup soup = read_mesh(path, ReadOptions{.max_file_bytes = max_file_mb << 20});
     nlohmann::json j{{"file", path.string()}, {"soup_vertices", soup.n_vertices()}, {"soup_faces", soup.n_faces()}};
     int status = 0;
     try {
@@ -70,10 +70,14 @@ void add_info(CLI::App& app, int& status) {
 #ifdef GEOLAB_HAS_LAB_01
     auto mesh = std::make_shared<std::string>();
     auto json = std::make_shared<bool>(false);
+    auto max_file_mb = std::make_shared<std::uint64_t>(0);
     auto* cmd = app.add_subcommand("info", "Topology of a mesh (V, E, F, boundary loops, χ, genus, components)");
     cmd->add_option("mesh", *mesh, "A mesh file (.obj .off .ply .stl) or a fetched model name (bunny00)")->required();
     cmd->add_flag("--json", *json, "Print JSON");
-    cmd->callback([mesh, json, &status] { status = run_info(*mesh, *json); });
+    cmd->add_option("--max-file-mb", *max_file_mb,
+                    "Refuse mesh files larger than this many MiB (default: $GEOLAB_MAX_FILE_MB, else 1024)")
+        ->check(CLI::Range(std::uint64_t(1), std::uint64_t(1) << 40));
+    cmd->callback([mesh, json, max_file_mb, &status] { status = run_info(*mesh, *json, *max_file_mb); });
 #else
     (void)app;
     (void)status;

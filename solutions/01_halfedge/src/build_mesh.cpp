@@ -13,16 +13,25 @@ namespace {
 
 // A corner k of the soup is the directed edge from soup.indices[k] to the next vertex of its face.
 // `out` lists the corners by their start vertex (a counting sort): the corners leaving u are
-// out[start[u] .. start[u+1]), each stored with the vertex it goes to.
+// out[start[u] .. start[u+1]), each stored with the vertex it goes to, sorted by (to, corner), so the
+// corners from u to v are found by binary search: O(log valence), not O(valence) (a fan's apex has thousands).
 struct DirectedEdges {
     struct Out {
         std::uint32_t to;
         std::uint32_t corner;
+        bool operator<(const Out& o) const { return to < o.to || (to == o.to && corner < o.corner); }
     };
     std::vector<std::uint32_t> start;
     std::vector<Out> out;
 
     std::span<const Out> leaving(std::uint32_t u) const { return {out.data() + start[u], out.data() + start[u + 1]}; }
+    // The corners from u to v, by increasing corner.
+    std::span<const Out> from_to(std::uint32_t u, std::uint32_t v) const {
+        const auto l = leaving(u);
+        const auto first = std::lower_bound(l.begin(), l.end(), Out{v, 0});
+        const auto last = std::lower_bound(first, l.end(), Out{v + 1, 0});  // v + 1: v < n_vertices, no overflow
+        return {first, last};
+    }
 };
 
 // The vertex that corner k (in face f) goes to.
@@ -30,7 +39,7 @@ std::uint32_t corner_target(const PolygonSoup& soup, std::size_t f, std::size_t 
     return soup.indices[k + 1 < soup.offsets[f + 1] ? k + 1 : soup.offsets[f]];
 }
 
-// Bucket the corners by start vertex: count, prefix sum, fill.
+// Bucket the corners by start vertex: count, prefix sum, fill; then sort each bucket (O(#corners log valence)).
 DirectedEdges bucket_by_start(const PolygonSoup& soup) {
     DirectedEdges d;
     d.start.assign(soup.n_vertices() + 1, 0);
@@ -41,6 +50,15 @@ DirectedEdges bucket_by_start(const PolygonSoup& soup) {
     for (std::size_t f = 0; f < soup.n_faces(); ++f)
         for (std::size_t k = soup.offsets[f]; k < soup.offsets[f + 1]; ++k)
             d.out[fill[soup.indices[k]]++] = {corner_target(soup, f, k), static_cast<std::uint32_t>(k)};
+    for (std::size_t v = 0; v < soup.n_vertices(); ++v) {
+        const auto first = d.out.begin() + d.start[v], last = d.out.begin() + d.start[v + 1];
+        if (last - first <= 16) {  // typical valences: insertion sort beats std::sort's set-up
+            for (auto i = first; i != last; ++i)
+                for (auto j = i; j != first && *j < *(j - 1); --j) std::iter_swap(j, j - 1);
+        } else {
+            std::sort(first, last);
+        }
+    }
     return d;
 }
 
@@ -50,19 +68,11 @@ std::size_t face_of_corner(const PolygonSoup& soup, std::uint32_t k) {
                                     soup.offsets.begin() - 1);
 }
 
-// The corners going from u to v.
-std::vector<std::uint32_t> corners_from_to(const DirectedEdges& d, std::uint32_t u, std::uint32_t v) {
-    std::vector<std::uint32_t> ks;
-    for (auto o : d.leaving(u))
-        if (o.to == v) ks.push_back(o.corner);
-    return ks;
-}
-
 [[noreturn]] void throw_complex_edge(const PolygonSoup& soup, const DirectedEdges& d, std::uint32_t u,
                                      std::uint32_t v) {
     std::vector<std::size_t> faces;
-    for (auto k : corners_from_to(d, u, v)) faces.push_back(face_of_corner(soup, k));
-    for (auto k : corners_from_to(d, v, u)) faces.push_back(face_of_corner(soup, k));
+    for (auto o : d.from_to(u, v)) faces.push_back(face_of_corner(soup, o.corner));
+    for (auto o : d.from_to(v, u)) faces.push_back(face_of_corner(soup, o.corner));
     std::sort(faces.begin(), faces.end());
     std::string list;
     for (std::size_t i = 0; i < faces.size(); ++i) list += (i ? ", face " : "face ") + std::to_string(faces[i]);
@@ -89,15 +99,13 @@ std::vector<std::uint32_t> corners_from_to(const DirectedEdges& d, std::uint32_t
 // Throws if the edge has 3+ faces or is used twice in the same direction.
 std::uint32_t find_twin_corner(const PolygonSoup& soup, const DirectedEdges& d, std::uint32_t k, std::uint32_t u,
                                std::uint32_t v) {
-    std::uint32_t same = invalid_index, twin = invalid_index;
-    int n_same = 0, n_twin = 0;
-    for (auto o : d.leaving(u))
-        if (o.to == v && o.corner != k) ++n_same, same = o.corner;
-    for (auto o : d.leaving(v))
-        if (o.to == u) ++n_twin, twin = o.corner;
-    if (1 + n_same + n_twin > 2) throw_complex_edge(soup, d, u, v);
-    if (n_same == 1) throw_orientation(soup, std::min(k, same), std::max(k, same), u, v);
-    return twin;
+    const auto same = d.from_to(u, v), twin = d.from_to(v, u);  // `same` includes k itself
+    if (same.size() + twin.size() > 2) throw_complex_edge(soup, d, u, v);
+    if (same.size() == 2) {
+        const std::uint32_t other = same[0].corner == k ? same[1].corner : same[0].corner;
+        throw_orientation(soup, std::min(k, other), std::max(k, other), u, v);
+    }
+    return twin.empty() ? invalid_index : twin[0].corner;
 }
 
 // The half-edge made for each corner, and the boundary half-edge leaving each vertex (if any).
@@ -171,14 +179,19 @@ void check_single_fans(const Mesh& mesh, const PolygonSoup& soup, const Directed
         } while (h != h0);
         const auto n_corners = d.start[v.idx + 1] - d.start[v.idx];
         if (n_faces_met == n_corners) continue;
-        // Name a face of the fan we walked and a face we did not meet.
+        // Name a face of the fan we walked and a face we did not meet: the first corner at v (in soup order)
+        // whose half-edge the walk did not pass (the fan's half-edges sorted, so the search is O(n log n)).
         std::vector<Halfedge> fan;
         for (Halfedge h = h0; fan.empty() || h != h0; h = mesh.next(mesh.twin(h))) fan.push_back(h);
+        std::sort(fan.begin(), fan.end());
+        std::uint32_t missed = invalid_index;
         for (auto o : d.leaving(v.idx))
-            if (std::find(fan.begin(), fan.end(), corner_halfedge[o.corner]) == fan.end()) {
-                Halfedge in_fan = mesh.is_boundary(h0) ? mesh.next(mesh.twin(h0)) : h0;
-                throw_complex_vertex(v.idx, mesh.face(in_fan).idx, face_of_corner(soup, o.corner));
-            }
+            if (o.corner < missed && !std::binary_search(fan.begin(), fan.end(), corner_halfedge[o.corner]))
+                missed = o.corner;
+        if (missed != invalid_index) {
+            Halfedge in_fan = mesh.is_boundary(h0) ? mesh.next(mesh.twin(h0)) : h0;
+            throw_complex_vertex(v.idx, mesh.face(in_fan).idx, face_of_corner(soup, missed));
+        }
     }
 }
 
