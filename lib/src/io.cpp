@@ -100,7 +100,7 @@ public:
           name_(name),
           next_(start),
           lf_(std::min(text.find('\n', start), text.size())),
-          cr_(std::min(text.find('\r', start), text.size())),
+          cr_(find_cr()),
           line_(first_line - 1),
           comment_(comment) {}
 
@@ -109,7 +109,7 @@ public:
     bool next_line() {
         while (next_ < text_.size()) {
             if (lf_ < next_) lf_ = std::min(text_.find('\n', next_), text_.size());
-            if (cr_ < next_) cr_ = std::min(text_.find('\r', next_), text_.size());
+            if (cr_ < next_) cr_ = find_cr();
             const std::size_t end = std::min(lf_, cr_);
             rest_ = text_.substr(next_, end - next_);
             next_ = end + (end == cr_ && end + 1 == lf_ ? 2 : 1);  // CRLF is one line end
@@ -188,6 +188,12 @@ public:
     }
 
 private:
+    // The first '\r' in [next_, lf_), or lf_ if there is none (never searches past the next LF: a binary PLY
+    // body after the header is not scanned).
+    std::size_t find_cr() const {
+        const std::size_t r = text_.substr(next_, lf_ - next_).find('\r');
+        return r == std::string_view::npos ? lf_ : next_ + r;
+    }
     void skip_spaces() {
         std::size_t n = 0;
         while (n < rest_.size() && is_space(rest_[n])) ++n;
@@ -197,7 +203,8 @@ private:
     std::string_view text_;
     const std::string& name_;
     std::size_t next_;  // start of the next line
-    std::size_t lf_, cr_;  // the next '\n' and '\r' at or after next_ (text_.size() when none)
+    std::size_t lf_;  // the next '\n' at or after next_ (text_.size() when none)
+    std::size_t cr_;  // the next '\r' at or after next_ if before lf_, else lf_
     std::string_view rest_;
     std::size_t line_;
     char comment_;
@@ -207,7 +214,8 @@ private:
 // OFF
 // ================================================================================================================
 
-// Reads the optional header keyword ([ST][C][N][4][n]OFF). Returns false when the file starts with the counts.
+// Reads the optional header keyword ([ST][C][N][4][n]OFF; "OFF" and the S, T, C prefixes in any case, "n" is
+// the dimension prefix). Returns false when the file starts with the counts.
 bool read_off_keyword(TextParser& in) {
     std::string_view key = in.peek();
     if (key.size() < 3 || !iequals(key.substr(key.size() - 3), "OFF")) return false;
@@ -215,7 +223,7 @@ bool read_off_keyword(TextParser& in) {
     std::string_view prefix = key.substr(0, key.size() - 3);
     if (prefix.find('4') != std::string_view::npos || prefix.find('n') != std::string_view::npos)
         in.fail("unsupported OFF variant " + quote(key) + " (only 3D vertices are read)");
-    if (prefix.find_first_not_of("STCN") != std::string_view::npos) in.fail("unknown OFF header " + quote(key));
+    if (prefix.find_first_not_of("STCNstc") != std::string_view::npos) in.fail("unknown OFF header " + quote(key));
     if (iequals(in.peek(), "BINARY")) in.fail("binary OFF is not supported");
     return true;
 }
