@@ -39,17 +39,18 @@ std::uint32_t corner_target(const PolygonSoup& soup, std::size_t f, std::size_t 
     return soup.indices[k + 1 < soup.offsets[f + 1] ? k + 1 : soup.offsets[f]];
 }
 
-// Bucket the corners by start vertex: count, prefix sum, fill; then sort each bucket (O(#corners log valence)).
+// Bucket the corners by start vertex: count, prefix sum (start[u] = the end of u's bucket), fill each bucket
+// from its end (start[u] moves back to its beginning: no second array); then sort each bucket
+// (O(#corners log valence)).
 DirectedEdges bucket_by_start(const PolygonSoup& soup) {
     DirectedEdges d;
     d.start.assign(soup.n_vertices() + 1, 0);
-    for (std::uint32_t u : soup.indices) ++d.start[u + 1];
-    for (std::size_t v = 0; v < soup.n_vertices(); ++v) d.start[v + 1] += d.start[v];
+    for (std::uint32_t u : soup.indices) ++d.start[u];
+    for (std::size_t v = 1; v <= soup.n_vertices(); ++v) d.start[v] += d.start[v - 1];
     d.out.resize(soup.indices.size());
-    std::vector<std::uint32_t> fill(d.start.begin(), d.start.end() - 1);
     for (std::size_t f = 0; f < soup.n_faces(); ++f)
         for (std::size_t k = soup.offsets[f]; k < soup.offsets[f + 1]; ++k)
-            d.out[fill[soup.indices[k]]++] = {corner_target(soup, f, k), static_cast<std::uint32_t>(k)};
+            d.out[--d.start[soup.indices[k]]] = {corner_target(soup, f, k), static_cast<std::uint32_t>(k)};
     for (std::size_t v = 0; v < soup.n_vertices(); ++v) {
         const auto first = d.out.begin() + d.start[v], last = d.out.begin() + d.start[v + 1];
         if (last - first <= 16) {  // typical valences: insertion sort beats std::sort's set-up
@@ -112,14 +113,12 @@ std::uint32_t find_twin_corner(const PolygonSoup& soup, const DirectedEdges& d, 
 struct Sides {
     std::vector<Halfedge> corner_halfedge;
     std::vector<Halfedge> boundary_out;
-    std::vector<std::uint32_t> boundary_corner;  // the corner whose twin is boundary_out[v] (for messages)
 };
 
 // One edge per undirected edge: the corner's half-edge plus its twin, which is the matching corner v→u or,
 // if there is none, a boundary half-edge leaving v.
 Sides add_edges(Mesh& mesh, const PolygonSoup& soup, const DirectedEdges& d) {
-    Sides s{std::vector<Halfedge>(soup.indices.size()), std::vector<Halfedge>(soup.n_vertices()),
-            std::vector<std::uint32_t>(soup.n_vertices())};
+    Sides s{std::vector<Halfedge>(soup.indices.size()), std::vector<Halfedge>(soup.n_vertices())};
     for (std::size_t f = 0; f < soup.n_faces(); ++f)
         for (auto k = soup.offsets[f]; k < soup.offsets[f + 1]; ++k) {
             if (s.corner_halfedge[k].is_valid()) continue;  // made as the twin of an earlier corner
@@ -130,10 +129,12 @@ Sides add_edges(Mesh& mesh, const PolygonSoup& soup, const DirectedEdges& d) {
             if (t != invalid_index) {
                 s.corner_halfedge[t] = mesh.twin(h);
             } else {  // twin(h) = v→u has no face; a manifold vertex has at most one such half-edge leaving it
-                if (s.boundary_out[v].is_valid())
-                    throw_complex_vertex(v, f, face_of_corner(soup, s.boundary_corner[v]));
+                if (const Halfedge b = s.boundary_out[v]; b.is_valid()) {
+                    // b = v→w is the twin of the only corner w→v (an earlier boundary edge)
+                    const std::uint32_t w = mesh.to_vertex(b).idx;
+                    throw_complex_vertex(v, f, face_of_corner(soup, d.from_to(w, v)[0].corner));
+                }
                 s.boundary_out[v] = mesh.twin(h);
-                s.boundary_corner[v] = k;
             }
         }
     return s;
