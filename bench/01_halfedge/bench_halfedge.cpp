@@ -5,6 +5,7 @@
 // quadratic in valence). Each build reports its minor page faults per iteration ("faults") and the peak memory
 // it adds above what the process held before it ("peak_MiB", measured once in a forked child).
 #include <benchmark/benchmark.h>
+#include <malloc.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -56,8 +57,8 @@ long status_kib(const char* field) {
 }
 
 // The peak resident memory (MiB) that one call of `build` adds to the process: run once in a forked child that
-// resets its high-water mark (/proc/self/clear_refs "5"), then compares the peak with its size at the start (the
-// soup is resident in both). -1 where /proc does not allow it.
+// returns freed heap memory (malloc_trim) and resets its high-water mark (/proc/self/clear_refs "5"), then
+// compares the peak with its size at the start (the soup is resident in both). -1 where /proc does not allow it.
 template <class Build>
 double peak_mib(Build build) {
     int fds[2];
@@ -65,6 +66,7 @@ double peak_mib(Build build) {
     const pid_t pid = fork();
     if (pid == 0) {
         double added = -1;
+        malloc_trim(0);  // give back what earlier runs freed, so that reusing it counts as new memory again
         if (std::FILE* f = std::fopen("/proc/self/clear_refs", "w")) {
             const bool reset = std::fputs("5", f) >= 0;
             if (std::fclose(f) == 0 && reset) {
