@@ -1144,20 +1144,28 @@ MeshFormat format_from_extension(const std::filesystem::path& path) {
                       " (expected .obj, .off, .ply or .stl)");
 }
 
-std::uint64_t default_max_file_bytes() {
+namespace {
+// The limit from GEOLAB_MAX_FILE_MB (default 1024 MiB); a bad value is an IoError naming `file`.
+std::uint64_t max_file_bytes_from_env(const std::string& file) {
     constexpr std::uint64_t mib = 1 << 20, default_mib = 1024;
     const char* env = std::getenv("GEOLAB_MAX_FILE_MB");
     if (env == nullptr || *env == '\0') return default_mib * mib;
     std::optional<std::int64_t> v = to_int(env);
     if (!v || *v <= 0 || static_cast<std::uint64_t>(*v) > (std::uint64_t(1) << 40))
-        throw IoError("GEOLAB_MAX_FILE_MB", 0,
-                      "expected a positive whole number of MiB (at most 2^40), found " + quote(env));
+        throw IoError(file, 0,
+                      "the environment variable GEOLAB_MAX_FILE_MB must be a positive whole number of MiB (at most "
+                      "2^40), not " +
+                          quote(env));
     return static_cast<std::uint64_t>(*v) * mib;
 }
+}  // namespace
+
+std::uint64_t default_max_file_bytes() { return max_file_bytes_from_env("GEOLAB_MAX_FILE_MB"); }
 
 PolygonSoup read_mesh(const std::filesystem::path& path, const ReadOptions& options) {
     MeshFormat format = format_from_extension(path);
-    const std::uint64_t max_bytes = options.max_file_bytes ? options.max_file_bytes : default_max_file_bytes();
+    const std::uint64_t max_bytes =
+        options.max_file_bytes ? options.max_file_bytes : max_file_bytes_from_env(path.string());
     return read_mesh_from_string(read_file(path, max_bytes), format, path.string());
 }
 
