@@ -3,6 +3,10 @@
 // (text) or the element (binary) and the reason.
 #include "geolab/io.hpp"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -22,10 +26,6 @@
 #include <tuple>
 #include <utility>
 #include <vector>
-
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 namespace geolab {
 namespace {
@@ -203,8 +203,8 @@ private:
     std::string_view text_;
     const std::string& name_;
     std::size_t next_;  // start of the next line
-    std::size_t lf_;  // the next '\n' at or after next_ (text_.size() when none)
-    std::size_t cr_;  // the next '\r' at or after next_ if before lf_, else lf_
+    std::size_t lf_;    // the next '\n' at or after next_ (text_.size() when none)
+    std::size_t cr_;    // the next '\r' at or after next_ if before lf_, else lf_
     std::string_view rest_;
     std::size_t line_;
     char comment_;
@@ -349,13 +349,22 @@ PolygonSoup read_obj(std::string_view text, const std::string& name) {
 enum class PlyType { int8, uint8, int16, uint16, int32, uint32, float32, float64 };
 
 std::optional<PlyType> ply_type(std::string_view s) {
-    static constexpr std::array<std::pair<std::string_view, PlyType>, 16> names = {{
-        {"char", PlyType::int8},     {"int8", PlyType::int8},       {"uchar", PlyType::uint8},
-        {"uint8", PlyType::uint8},   {"short", PlyType::int16},     {"int16", PlyType::int16},
-        {"ushort", PlyType::uint16}, {"uint16", PlyType::uint16},   {"int", PlyType::int32},
-        {"int32", PlyType::int32},   {"uint", PlyType::uint32},     {"uint32", PlyType::uint32},
-        {"float", PlyType::float32}, {"float32", PlyType::float32}, {"double", PlyType::float64},
-        {"float64", PlyType::float64}}};
+    static constexpr std::array<std::pair<std::string_view, PlyType>, 16> names = {{{"char", PlyType::int8},
+                                                                                    {"int8", PlyType::int8},
+                                                                                    {"uchar", PlyType::uint8},
+                                                                                    {"uint8", PlyType::uint8},
+                                                                                    {"short", PlyType::int16},
+                                                                                    {"int16", PlyType::int16},
+                                                                                    {"ushort", PlyType::uint16},
+                                                                                    {"uint16", PlyType::uint16},
+                                                                                    {"int", PlyType::int32},
+                                                                                    {"int32", PlyType::int32},
+                                                                                    {"uint", PlyType::uint32},
+                                                                                    {"uint32", PlyType::uint32},
+                                                                                    {"float", PlyType::float32},
+                                                                                    {"float32", PlyType::float32},
+                                                                                    {"double", PlyType::float64},
+                                                                                    {"float64", PlyType::float64}}};
     for (auto [name, type] : names)
         if (iequals(s, name)) return type;
     return std::nullopt;
@@ -564,8 +573,8 @@ private:
     std::string_view next(std::string_view what) {
         std::string_view t = in_.token_any_line();
         if (t.empty())
-            in_.fail("unexpected end of file: expected " + std::string(what) + " of element " + element_->name +
-                     " " + std::to_string(index_) + " (the header declares " + std::to_string(element_->count) +
+            in_.fail("unexpected end of file: expected " + std::string(what) + " of element " + element_->name + " " +
+                     std::to_string(index_) + " (the header declares " + std::to_string(element_->count) +
                      ", the file is truncated)");
         return t;
     }
@@ -615,9 +624,9 @@ public:
                           std::to_string(data_.size() - pos_) + " bytes of unexpected data after the last element");
     }
     [[noreturn]] void fail(const std::string& reason) const {
-        throw IoError(name_, 0,
-                      "element " + (element_ ? element_->name : std::string("?")) + " " + std::to_string(index_) +
-                          ": " + reason);
+        throw IoError(
+            name_, 0,
+            "element " + (element_ ? element_->name : std::string("?")) + " " + std::to_string(index_) + ": " + reason);
     }
 
 private:
@@ -794,9 +803,7 @@ private:
         std::uint32_t x, y, z;  // the float bits
         Index corner;
         bool same_position(const Corner& o) const { return x == o.x && y == o.y && z == o.z; }
-        bool operator<(const Corner& o) const {
-            return std::tie(x, y, z, corner) < std::tie(o.x, o.y, o.z, o.corner);
-        }
+        bool operator<(const Corner& o) const { return std::tie(x, y, z, corner) < std::tie(o.x, o.y, o.z, o.corner); }
     };
     std::vector<Corner> corners_;
 };

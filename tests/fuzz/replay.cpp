@@ -41,8 +41,8 @@ std::string replay(const fs::path& p) {
         } catch (const geolab::IoError& e) {
             return std::string("rejected: ") + e.what();
         }
-        outcome = "read " + std::to_string(soup.n_vertices()) + " vertices, " + std::to_string(soup.n_faces()) +
-                  " faces";
+        outcome =
+            "read " + std::to_string(soup.n_vertices()) + " vertices, " + std::to_string(soup.n_faces()) + " faces";
     }
     try {
         const geolab::halfedge::Mesh mesh = geolab::halfedge::build_mesh(soup);

@@ -52,10 +52,10 @@ std::string error_of_file(const fs::path& path, const geolab::ReadOptions& optio
 }
 
 // Reading `data` throws an IoError whose message has each of `parts` (the file's name among them).
-#define CHECK_REJECTS(data, format, name, ...)                                \
-    do {                                                                      \
-        const std::string msg_ = error_of(data, format, name);                \
-        CHECK_MESSAGE(contains(msg_, std::string(name) + ":"), msg_);         \
+#define CHECK_REJECTS(data, format, name, ...)                                              \
+    do {                                                                                    \
+        const std::string msg_ = error_of(data, format, name);                              \
+        CHECK_MESSAGE(contains(msg_, std::string(name) + ":"), msg_);                       \
         for (const char* part_ : {__VA_ARGS__}) CHECK_MESSAGE(contains(msg_, part_), msg_); \
     } while (0)
 
@@ -96,7 +96,8 @@ TEST_SUITE("io hostile") {
         // The 144-byte file of issue 13: a second 'vertex' element of 10^9 instances with no properties used to
         // reserve and fill 24 GB (10^8: 26 s and 6.7 GB, then "manifold").
         AddressSpaceCap cap(std::size_t(4) << 30);  // a reader that allocates gigabytes fails here, fast
-        const std::string dup_vertex = ply_vertex_header + "element vertex 1000000000\nend_header\n" + ply_three_vertices;
+        const std::string dup_vertex =
+            ply_vertex_header + "element vertex 1000000000\nend_header\n" + ply_three_vertices;
         CHECK_REJECTS(dup_vertex, MeshFormat::ply_ascii, "dupv.ply", "dupv.ply:7:", "'vertex' declared twice",
                       "first on line 3");
         // 2^63 - 1 faces in a second 'face' element used to fail with a bare "vector::reserve"
@@ -106,13 +107,14 @@ TEST_SUITE("io hostile") {
                                      ply_three_vertices + "3 0 1 2\n";
         CHECK_REJECTS(dup_face, MeshFormat::ply_ascii, "dupf.ply", "dupf.ply:9:", "'face' declared twice");
         // the same in binary
-        std::string bin = "ply\nformat binary_little_endian 1.0\nelement vertex 1\nproperty float x\n"
-                          "property float y\nproperty float z\nelement vertex 100000000\nend_header\n";
+        std::string bin =
+            "ply\nformat binary_little_endian 1.0\nelement vertex 1\nproperty float x\n"
+            "property float y\nproperty float z\nelement vertex 100000000\nend_header\n";
         bin.append(12, '\0');
         CHECK_REJECTS(bin, MeshFormat::ply_binary_le, "dupb.ply", "dupb.ply:7:", "declared twice");
         // a property declared twice in one element
-        CHECK_REJECTS(ply_vertex_header + "property float x\nend_header\n0 0 0 0\n", MeshFormat::ply_ascii,
-                      "dupx.ply", "dupx.ply:7:", "property 'x' twice");
+        CHECK_REJECTS(ply_vertex_header + "property float x\nend_header\n0 0 0 0\n", MeshFormat::ply_ascii, "dupx.ply",
+                      "dupx.ply:7:", "property 'x' twice");
     }
 
     TEST_CASE("PLY: huge counts fail with the file, the line and the count") {
@@ -125,8 +127,8 @@ TEST_SUITE("io hostile") {
             CHECK_REJECTS(text, MeshFormat::ply_ascii, "huge.ply", "huge.ply:7:", "'face'");
         }
         // an element with no properties takes no bytes: any count is fine, and it costs nothing to skip
-        const std::string empty_elements = ply_vertex_header + "element nothing 9223372036854775807\nend_header\n" +
-                                           ply_three_vertices;
+        const std::string empty_elements =
+            ply_vertex_header + "element nothing 9223372036854775807\nend_header\n" + ply_three_vertices;
         CHECK(read_mesh_from_string(empty_elements, MeshFormat::ply_ascii, "e.ply").n_vertices() == 3);
     }
 
@@ -138,26 +140,29 @@ TEST_SUITE("io hostile") {
             CHECK_REJECTS(text, MeshFormat::ply_ascii, "fidx.ply", "fidx.ply:8:", "integer type");
         }
         // in binary, with NaN indices, and in a second face list after a good first one
-        std::string bin = "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
-                          "property float y\nproperty float z\nelement face 1\n"
-                          "property list uchar int vertex_indices\nproperty list uchar double vertex_index\n"
-                          "end_header\n";
+        std::string bin =
+            "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
+            "property float y\nproperty float z\nelement face 1\n"
+            "property list uchar int vertex_indices\nproperty list uchar double vertex_index\n"
+            "end_header\n";
         CHECK_REJECTS(bin, MeshFormat::ply_binary_le, "fidx2.ply", "fidx2.ply:9:", "integer type");
     }
 
     TEST_CASE("PLY: a truncated body says what was expected and where") {
-        const std::string head = ply_vertex_header + "element face 2\nproperty list uchar int vertex_indices\n"
-                                                     "end_header\n";
-        CHECK_REJECTS(head + ply_three_vertices + "3 0 1 2\n3 0 1       \n", MeshFormat::ply_ascii, "cut.ply", "cut.ply:14:",
-                      "expected vertex index of element face 1", "truncated");
-        std::string bin = "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
-                          "property float y\nproperty float z\nelement face 1\n"
-                          "property list uchar int vertex_indices\nend_header\n";
+        const std::string head = ply_vertex_header +
+                                 "element face 2\nproperty list uchar int vertex_indices\n"
+                                 "end_header\n";
+        CHECK_REJECTS(head + ply_three_vertices + "3 0 1 2\n3 0 1       \n", MeshFormat::ply_ascii, "cut.ply",
+                      "cut.ply:14:", "expected vertex index of element face 1", "truncated");
+        std::string bin =
+            "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
+            "property float y\nproperty float z\nelement face 1\n"
+            "property list uchar int vertex_indices\nend_header\n";
         bin.append(36, '\0');
         bin += '\x04';  // a quad: 16 bytes of indices follow, only 12 do
         bin.append(12, '\0');
-        CHECK_REJECTS(bin, MeshFormat::ply_binary_le, "bcut.ply", "element face 0", "expected a value of type int32 at byte",
-                      "truncated");
+        CHECK_REJECTS(bin, MeshFormat::ply_binary_le, "bcut.ply", "element face 0",
+                      "expected a value of type int32 at byte", "truncated");
     }
 
     TEST_CASE("STL: 60,000 corners built to share one bucket of the old welding hash read in n log n") {
@@ -269,12 +274,14 @@ TEST_SUITE("io hostile") {
     TEST_CASE("text conventions, the same in every reader: BOM, CRLF and lone-CR line ends, keyword case") {
         const std::string off = "OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n";
         const std::string obj = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n";
-        const std::string ply = "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
-                                "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
-                                "end_header\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n";
-        const std::string stl = "solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 1 1 0\n"
-                                "endloop\nendfacet\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 1 0\n"
-                                "vertex 0 1 0\nendloop\nendfacet\nendsolid s\n";
+        const std::string ply =
+            "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+            "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+            "end_header\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n";
+        const std::string stl =
+            "solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 1 1 0\n"
+            "endloop\nendfacet\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 1 0\n"
+            "vertex 0 1 0\nendloop\nendfacet\nendsolid s\n";
         auto with_line_ends = [](std::string s, const std::string& eol) {
             std::string out;
             for (char c : s) out += c == '\n' ? eol : std::string(1, c);
@@ -307,17 +314,18 @@ TEST_SUITE("io hostile") {
                 for (const char* name : {" X\n", " Y\n", " Z\n", "VERTEX_INDICES", "VERTEX ", "FACE "}) {
                     std::string lower = name;
                     for (char& ch : lower) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-                    for (std::size_t at; (at = up.find(name)) != std::string::npos;) up.replace(at, lower.size(), lower);
+                    for (std::size_t at; (at = up.find(name)) != std::string::npos;)
+                        up.replace(at, lower.size(), lower);
                 }
             PolygonSoup s;
             CHECK_NOTHROW(s = read_mesh_from_string(up, c.format, "up"));
             CHECK(s.n_faces() == c.faces);
         }
         // with lone CRs, lines are still counted: the error is on line 5 of each
-        CHECK_REJECTS(with_line_ends("OFF\n4 1 0\n0 0 0\n1 0 0\n1 q 0\n0 1 0\n4 0 1 2 3\n", "\r"), MeshFormat::off, "cr.off",
-                      "cr.off:5:", "'q'");
-        CHECK_REJECTS(with_line_ends("v 0 0 0\nv 0 0 0\nv 0 0 0\nv 0 0 0\nf 1 2 9\n", "\r"), MeshFormat::obj,
-                      "cr.obj", "cr.obj:5:", "out of range");
+        CHECK_REJECTS(with_line_ends("OFF\n4 1 0\n0 0 0\n1 0 0\n1 q 0\n0 1 0\n4 0 1 2 3\n", "\r"), MeshFormat::off,
+                      "cr.off", "cr.off:5:", "'q'");
+        CHECK_REJECTS(with_line_ends("v 0 0 0\nv 0 0 0\nv 0 0 0\nv 0 0 0\nf 1 2 9\n", "\r"), MeshFormat::obj, "cr.obj",
+                      "cr.obj:5:", "out of range");
         CHECK_REJECTS(with_line_ends("solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvortex\n", "\r"),
                       MeshFormat::stl_ascii, "cr.stl", "cr.stl:5:", "'vortex'");
         CHECK_REJECTS(with_line_ends("ply\nformat ascii 1.0\nelement vertex 4\ncomment x\nproperty x\n", "\r"),
