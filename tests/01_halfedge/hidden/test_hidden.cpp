@@ -96,32 +96,40 @@ TEST_SUITE("Task 1: build the mesh") {
         check_complex_vertex_message(soup, 0, [](std::uint32_t f) { return f / 4; });
     }
 
-    TEST_CASE("build_mesh hidden: closed sheets of different valences meeting at one vertex are a complex vertex" *
+    TEST_CASE("build_mesh hidden: sheets of different valences or with a boundary meeting at one vertex are a "
+              "complex vertex" *
               geolab::points(2) * geolab::hidden() *
               geolab::hint("Count the faces met by the walk around v against all the corners at v: a vertex whose "
-                           "faces form two closed fans of different sizes is not manifold either. Name one face of "
-                           "each fan.")) {
+                           "faces form two fans of different sizes, or an open fan and a closed one, is not manifold "
+                           "either. Name one face of each fan (faces, never a boundary half-edge's missing face).")) {
         build_valid(fx::tetrahedron(), "tetrahedron");
         const PolygonSoup bi = bipyramid(8);
         struct Case {
             const char* name;
-            std::uint32_t va;  // the bipyramid's vertex
-            PolygonSoup other;
-            std::uint32_t vb;  // the other solid's vertex glued to it
+            PolygonSoup first;
+            std::uint32_t va;  // the first solid's vertex
+            PolygonSoup second;
+            std::uint32_t vb;  // the second solid's vertex glued to it
             glm::dvec3 away;
         };
         for (const Case& c :
-             {Case{"8-gon bipyramid equator vertex 0 = octahedron vertex 1 (-x)", 0, octahedron(), 1, {0.5, 0, 0}},
-              Case{"8-gon bipyramid apex 8 = octahedron vertex 5 (-z)", 8, octahedron(), 5, {0, 0, 0.5}},
-              Case{"8-gon bipyramid equator vertex 0 = tetrahedron vertex 0", 0, fx::tetrahedron(), 0, {0.5, 0, 0}}})
-            for (bool other_first : {false, true}) {
-                const auto [soup, first_other] = glued_at_vertex(bi, c.va, c.other, c.vb, c.away, other_first);
-                INFO(c.name << ", the second solid's faces " << (other_first ? "first" : "last") << " ("
+             {Case{"8-gon bipyramid equator vertex 0 = octahedron vertex 1 (-x)", bi, 0, octahedron(), 1, {0.5, 0, 0}},
+              Case{"8-gon bipyramid apex 8 = octahedron vertex 5 (-z)", bi, 8, octahedron(), 5, {0, 0, 0.5}},
+              Case{"8-gon bipyramid equator vertex 0 = tetrahedron vertex 0", bi, 0, fx::tetrahedron(), 0, {0.5, 0, 0}},
+              Case{"grid(3 x 3) corner vertex 0 = tetrahedron vertex 0", fx::grid(3, 3), 0, fx::tetrahedron(), 0,
+                   {0, 0, 0.5}},
+              Case{"grid(3 x 3) boundary vertex 1 = octahedron vertex 5 (-z)", fx::grid(3, 3), 1, octahedron(), 5,
+                   {0, 0, 0.5}},
+              Case{"grid(3 x 3) interior vertex 5 = octahedron vertex 5 (-z)", fx::grid(3, 3), 5, octahedron(), 5,
+                   {0, 0, 0.5}}})
+            for (bool second_first : {false, true}) {
+                const auto [soup, first_second] = glued_at_vertex(c.first, c.va, c.second, c.vb, c.away, second_first);
+                INFO(c.name << ", the second solid's faces " << (second_first ? "first" : "last") << " ("
                             << faces_at(soup, c.va).size() << " faces at vertex " << c.va << ")");
                 CHECK_THROWS_AS(build_mesh(soup), geolab::TopologyError);
-                const std::size_t n_other = c.other.n_faces();
+                const std::size_t n_second = c.second.n_faces();
                 check_complex_vertex_message(soup, c.va, [&](std::uint32_t f) {
-                    return f >= first_other && f < first_other + n_other;  // true: a face of the second solid
+                    return f >= first_second && f < first_second + n_second;  // true: a face of the second solid
                 });
             }
     }
