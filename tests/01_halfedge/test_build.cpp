@@ -143,7 +143,7 @@ TEST_SUITE("Task 1: build the mesh") {
                 REQUIRE(m.halfedge(v).is_valid());
                 CHECK(m.from_vertex(m.halfedge(v)) == v);
                 CHECK_MESSAGE(m.is_boundary(m.halfedge(v)) == bool(on_boundary[v.idx]),
-                              (on_boundary[v.idx] ? "boundary vertex whose halfedge(v) has a face"
+                              std::string(on_boundary[v.idx] ? "boundary vertex whose halfedge(v) has a face"
                                                   : "interior vertex whose halfedge(v) is a boundary half-edge"));
             }
         }
@@ -202,7 +202,7 @@ TEST_SUITE("Task 1: build the mesh") {
         for (const Case& c : {Case{"cube (quads) with face 3 flipped", fx::flip_face(fx::cube(false), 3), 3},
                               Case{"icosphere(1) with face 57 flipped", fx::flip_face(fx::icosphere(1), 57), 57},
                               Case{"grid(3 x 3) with face 8 flipped", fx::flip_face(fx::grid(3, 3), 8), 8}}) {
-            INFO(c.name);
+            INFO(std::string(c.name));
             CHECK_THROWS_AS(build_mesh(c.soup), geolab::TopologyError);
             const std::string msg = build_error_message(c.soup);
             CAPTURE(msg);
@@ -215,7 +215,7 @@ TEST_SUITE("Task 1: build the mesh") {
                               Case{"icosphere(1) with face 0 flipped", fx::flip_face(fx::icosphere(1), 0), 0},
                               Case{"grid(3 x 3) with face 0 flipped", fx::flip_face(fx::grid(3, 3), 0), 0},
                               Case{"grid(3 x 3) with face 8 flipped", fx::flip_face(fx::grid(3, 3), 8), 8}}) {
-            INFO(c.name);
+            INFO(std::string(c.name));
             CHECK_THROWS_AS(build_mesh(c.soup), geolab::TopologyError);
             check_orientation_message(c.soup, c.flipped);
         }
@@ -279,7 +279,7 @@ TEST_SUITE("Task 1: build the mesh") {
             const std::string expect = "build_mesh: complex edge between vertex " + std::to_string(std::min(u, v)) +
                                        " and vertex " + std::to_string(std::max(u, v)) + ": used by " + list +
                                        " (a manifold edge has at most 2 faces)";
-            INFO("icosphere(1) (80 faces) with " << c.name << " on its edge " << u << "-" << v << " (" << n
+            INFO("icosphere(1) (80 faces) with " << std::string(c.name) << " on its edge " << u << "-" << v << " (" << n
                                                  << " faces on it)");
             CHECK_THROWS_AS(build_mesh(soup), geolab::TopologyError);
             const std::string msg = build_error_message(soup);
@@ -294,7 +294,7 @@ TEST_SUITE("Task 1: build the mesh") {
                            "this fails, look at boundary vertices and holes.")) {
         for (const char* name : {"bunny00", "holes"}) {
             const PolygonSoup soup = load_model(name);
-            INFO("model " << name << ": " << soup.n_vertices() << " vertices, " << soup.n_faces() << " faces");
+            INFO("model " << std::string(name) << ": " << soup.n_vertices() << " vertices, " << soup.n_faces() << " faces");
             const Mesh m = build_valid(soup, name);
             const int chi = int(soup.n_vertices()) - int(undirected_edges(soup).size()) + int(soup.n_faces());
             CHECK_MESSAGE(euler_characteristic(m) == chi, "euler_characteristic: expected " << chi << ", got "

@@ -10,7 +10,7 @@ TEST_SUITE("Task 4: geometry") {
                            "where n points. area = |n| / 2.")) {
         for (bool triangulate : {false, true}) {
             const PolygonSoup soup = fx::cube(triangulate);
-            INFO((triangulate ? "cube (triangles)" : "cube (quads)"));
+            INFO(std::string(triangulate ? "cube (triangles)" : "cube (quads)"));
             const Mesh m = stored_mesh(triangulate ? "cube (triangles)" : "cube (quads)", soup);
             for (Face f : m.faces()) {
                 CAPTURE(f);

@@ -65,7 +65,7 @@ TEST_SUITE("Task 5: smoothing") {
         for (int i = 0; i < 3; ++i) ref = reference_smoothing_step(soup, ref, 0.5);
         for (Vertex v : m.vertices()) {
             CAPTURE(v);
-            INFO((on_boundary[v.idx] ? "boundary vertex" : "interior vertex")
+            INFO(std::string(on_boundary[v.idx] ? "boundary vertex" : "interior vertex")
                  << ": expected " << str(ref[v.idx]) << ", got " << str(m.position(v)));
             CHECK(m.position(v).z == 0.0);
             if (on_boundary[v.idx]) CHECK(m.position(v) == soup.positions[v.idx]);

@@ -14,7 +14,7 @@ TEST_SUITE("Task 3: topology") {
             const auto on_boundary = boundary_vertices(f.soup);
             for (Vertex v : m.vertices()) {
                 CAPTURE(v);
-                INFO((on_boundary[v.idx] ? "a boundary vertex" : "an interior or isolated vertex"));
+                INFO(std::string(on_boundary[v.idx] ? "a boundary vertex" : "an interior or isolated vertex"));
                 CHECK(valence(m, v) == int(nb[v.idx].size()));
             }
         }
@@ -117,7 +117,7 @@ TEST_SUITE("Task 3: topology") {
                 for (std::uint32_t w = 0; w < v; ++w)
                     if ((roots[w] == roots[v]) != (c.vertex_component[w] == label))
                         FAIL_CHECK("vertices " << w << " and " << v << " are "
-                                               << (roots[w] == roots[v] ? "connected" : "not connected")
+                                               << std::string(roots[w] == roots[v] ? "connected" : "not connected")
                                                << " but got labels " << c.vertex_component[w] << " and " << label);
             }
         }
@@ -150,7 +150,7 @@ TEST_SUITE("Task 3: topology") {
                               Case{"127 tetrahedra then torus(8, 6)", tetrahedra_in_a_row_mesh(127, torus), 128, 254, 1},
                               Case{"62 tetrahedra then two tori", tetrahedra_in_a_row_mesh(62, tori), 64, 124, 2},
                               Case{"130 tetrahedra then two tori", tetrahedra_in_a_row_mesh(130, tori), 132, 260, 2}}) {
-            INFO(c.name << " (tetrahedra 3 apart along x, each a closed sphere): expected " << c.components
+            INFO(std::string(c.name) << " (tetrahedra 3 apart along x, each a closed sphere): expected " << c.components
                         << " components, chi " << c.chi << ", genus " << c.genus);
             const Components comp = connected_components(c.mesh);
             CHECK_MESSAGE(comp.count == c.components, "connected_components: got " << comp.count);

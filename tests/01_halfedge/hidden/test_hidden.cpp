@@ -76,7 +76,7 @@ TEST_SUITE("Task 1: build the mesh") {
               geolab::hidden() * geolab::hint("A non-orientable surface always has some directed edge used twice.")) {
         build_valid(fx::tetrahedron(), "tetrahedron");
         for (auto [segments, tri] : {std::pair{12, true}, std::pair{7, false}}) {
-            INFO("mobius(" << segments << ", " << (tri ? "triangles" : "quads") << ")");
+            INFO("mobius(" << segments << ", " << std::string(tri ? "triangles" : "quads") << ")");
             const PolygonSoup soup = fx::mobius(segments, tri);
             CHECK_THROWS_AS(build_mesh(soup), geolab::TopologyError);
             CHECK(contains(build_error_message(soup), "inconsistent orientation"));
@@ -124,7 +124,7 @@ TEST_SUITE("Task 1: build the mesh") {
                    {0, 0, 0.5}}})
             for (bool second_first : {false, true}) {
                 const auto [soup, first_second] = glued_at_vertex(c.first, c.va, c.second, c.vb, c.away, second_first);
-                INFO(c.name << ", the second solid's faces " << (second_first ? "first" : "last") << " ("
+                INFO(std::string(c.name) << ", the second solid's faces " << std::string(second_first ? "first" : "last") << " ("
                             << faces_at(soup, c.va).size() << " faces at vertex " << c.va << ")");
                 CHECK_THROWS_AS(build_mesh(soup), geolab::TopologyError);
                 const std::size_t n_second = c.second.n_faces();
