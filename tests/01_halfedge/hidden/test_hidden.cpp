@@ -116,6 +116,9 @@ TEST_SUITE("Task 1: build the mesh") {
              {Case{"8-gon bipyramid equator vertex 0 = octahedron vertex 1 (-x)", bi, 0, octahedron(), 1, {0.5, 0, 0}},
               Case{"8-gon bipyramid apex 8 = octahedron vertex 5 (-z)", bi, 8, octahedron(), 5, {0, 0, 0.5}},
               Case{"8-gon bipyramid equator vertex 0 = tetrahedron vertex 0", bi, 0, fx::tetrahedron(), 0, {0.5, 0, 0}},
+              // 4 + 3 = 7 corners at vertex 1, as many as the faces around its neighbour, the apex 7
+              Case{"7-gon bipyramid equator vertex 1 = tetrahedron vertex 0", bipyramid(7), 1, fx::tetrahedron(), 0,
+                   {0.5, 0, 0}},
               Case{"grid(3 x 3) corner vertex 0 = tetrahedron vertex 0", fx::grid(3, 3), 0, fx::tetrahedron(), 0,
                    {0, 0, 0.5}},
               Case{"grid(3 x 3) boundary vertex 1 = octahedron vertex 5 (-z)", fx::grid(3, 3), 1, octahedron(), 5,
