@@ -1,6 +1,8 @@
 #pragma once
-// Lab 01 test helpers: the fixture family with its expected topology, and reference answers computed from the
-// soup by brute force (std::set / std::map), independently of any half-edge code.
+// Lab 01 test helpers: reference answers computed from the soup by brute force (std::set / std::map), independently
+// of any half-edge code. The inputs are in fixtures.hpp. The tests of Task 1 build their meshes with build_mesh
+// (build_valid); those of Tasks 2-5 take them from the stored connectivity (stored.hpp: stored_mesh), so that they
+// never depend on your build_mesh.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -8,12 +10,15 @@
 #include <glm/geometric.hpp>
 #include <map>
 #include <numeric>
+#include <regex>
 #include <set>
 #include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "fixtures.hpp"
+#include "stored.hpp"
 #include "geolab/errors.hpp"
 #include "geolab/fixtures.hpp"
 #include "geolab/grading/test.hpp"
@@ -25,154 +30,6 @@
 namespace lab01 {
 
 using namespace geolab::halfedge;
-using geolab::PolygonSoup;
-namespace fx = geolab::fixtures;
-
-// ---- printing ------------------------------------------------------------------------------------------------
-
-// A small soup as C++ code that rebuilds it, so a failing case can be pasted into a test or a main().
-inline std::string mesh_to_string(const PolygonSoup& soup) {
-    std::ostringstream os;
-    os.precision(17);
-    os << "PolygonSoup soup;\nsoup.positions = {";
-    for (std::size_t v = 0; v < soup.n_vertices(); ++v) {
-        const auto& p = soup.positions[v];
-        os << (v ? ", " : "") << "{" << p.x << ", " << p.y << ", " << p.z << "}";
-    }
-    os << "};\n";
-    for (std::size_t f = 0; f < soup.n_faces(); ++f) {
-        os << "soup.add_face({";
-        for (std::size_t i = 0; i < soup.face(f).size(); ++i) os << (i ? ", " : "") << soup.face(f)[i];
-        os << "});\n";
-    }
-    return os.str();
-}
-
-// ---- the fixture family --------------------------------------------------------------------------------------
-
-// A named soup with the topology a correct build must report.
-struct Fixture {
-    std::string name;
-    PolygonSoup soup;
-    int V, E, F;
-    int chi;         // V - E + F
-    int loops;       // boundary loops (holes)
-    int components;  // connected components (isolated vertices count)
-    int genus;
-};
-
-// What a failing test prints about its input: the name and, when small, the soup itself.
-inline std::string describe(const Fixture& f) {
-    std::string s = "fixture '" + f.name + "'";
-    if (f.soup.n_faces() <= 12) s += ", built from:\n" + mesh_to_string(f.soup);
-    return s;
-}
-
-// Octahedron with vertices ±x (0, 1), ±y (2, 3), ±z (4, 5); faces counter-clockwise seen from outside.
-inline PolygonSoup octahedron() {
-    PolygonSoup s;
-    s.positions = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-    for (auto f : {std::array<std::uint32_t, 3>{0, 2, 4},
-                   {2, 1, 4},
-                   {1, 3, 4},
-                   {3, 0, 4},
-                   {2, 0, 5},
-                   {1, 2, 5},
-                   {3, 1, 5},
-                   {0, 3, 5}})
-        s.add_face({f[0], f[1], f[2]});
-    return s;
-}
-
-// Square pyramid without its base: apex 0 at (0,0,1) is the only interior vertex, 1..4 the boundary square.
-inline PolygonSoup open_pyramid() {
-    PolygonSoup s;
-    s.positions = {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}};
-    s.add_face({0, 1, 2});
-    s.add_face({0, 2, 3});
-    s.add_face({0, 3, 4});
-    s.add_face({0, 4, 1});
-    return s;
-}
-
-// A single polygon with n corners on the unit circle.
-inline PolygonSoup polygon(int n) {
-    PolygonSoup s;
-    std::vector<std::uint32_t> vs;
-    for (int i = 0; i < n; ++i) {
-        const double a = 2 * 3.14159265358979323846 * i / n;
-        s.positions.emplace_back(std::cos(a), std::sin(a), 0.0);
-        vs.push_back(static_cast<std::uint32_t>(i));
-    }
-    s.add_face(vs);
-    return s;
-}
-
-// A mixed polygon mesh: square 0 1 2 3 with a triangular roof 3 2 4 (planar, open).
-inline PolygonSoup house() {
-    PolygonSoup s;
-    s.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.5, 1.5, 0}};
-    s.add_face({0, 1, 2, 3});
-    s.add_face({3, 2, 4});
-    return s;
-}
-
-// The soup without the faces listed (they must not share vertices with each other or the border: holes).
-inline PolygonSoup without_faces(const PolygonSoup& in, std::set<std::size_t> drop) {
-    PolygonSoup s;
-    s.positions = in.positions;
-    for (std::size_t f = 0; f < in.n_faces(); ++f)
-        if (!drop.count(f)) s.add_face(in.face(f));
-    return s;
-}
-
-// grid(6, 6) with two separate triangles removed: three boundary loops.
-inline PolygonSoup grid_with_two_holes() {
-    // cell (i, j) of grid(nx, ny) has faces 2(j nx + i) and 2(j nx + i) + 1
-    return without_faces(fx::grid(6, 6), {2 * (1 * 6 + 1), 2 * (4 * 6 + 4)});
-}
-
-// The cube's six quads minus the top (+z): an open box.
-inline PolygonSoup open_box() { return without_faces(fx::cube(false), {1}); }
-
-// The tetrahedron plus one vertex that no face uses.
-inline PolygonSoup tetrahedron_with_isolated_vertex() {
-    PolygonSoup s = fx::tetrahedron();
-    s.positions.emplace_back(5.0, 5.0, 5.0);
-    return s;
-}
-
-// Every valid input of the lab with its expected topology (closed, open, polygons, holes, several components).
-inline std::vector<Fixture> manifold_fixtures() {
-    return {
-        {"tetrahedron", fx::tetrahedron(), 4, 6, 4, 2, 0, 1, 0},
-        {"cube (quads)", fx::cube(false), 8, 12, 6, 2, 0, 1, 0},
-        {"cube (triangles)", fx::cube(true), 8, 18, 12, 2, 0, 1, 0},
-        {"octahedron", octahedron(), 6, 12, 8, 2, 0, 1, 0},
-        {"icosphere(0)", fx::icosphere(0), 12, 30, 20, 2, 0, 1, 0},
-        {"icosphere(2)", fx::icosphere(2), 162, 480, 320, 2, 0, 1, 0},
-        {"torus(8 x 6 triangles)", fx::torus(8, 6, 1.0, 0.35, true), 48, 144, 96, 0, 0, 1, 1},
-        {"torus(6 x 4 quads)", fx::torus(6, 4, 1.0, 0.35, false), 24, 48, 24, 0, 0, 1, 1},
-        {"grid(1 x 1)", fx::grid(1, 1), 4, 5, 2, 1, 1, 1, 0},
-        {"grid(4 x 4)", fx::grid(4, 4), 25, 56, 32, 1, 1, 1, 0},
-        {"grid(3 x 2)", fx::grid(3, 2), 12, 23, 12, 1, 1, 1, 0},
-        {"grid(6 x 6) with two holes", grid_with_two_holes(), 49, 120, 70, -1, 3, 1, 0},
-        {"open box (5 quads)", open_box(), 8, 12, 5, 1, 1, 1, 0},
-        {"open pyramid", open_pyramid(), 5, 8, 4, 1, 1, 1, 0},
-        {"triangle", polygon(3), 3, 3, 1, 1, 1, 1, 0},
-        {"pentagon", polygon(5), 5, 5, 1, 1, 1, 1, 0},
-        {"house (quad + triangle)", house(), 5, 6, 2, 1, 1, 1, 0},
-        {"two components", fx::two_components(), 8, 12, 8, 4, 0, 2, 0},
-        {"tetrahedron + isolated vertex", tetrahedron_with_isolated_vertex(), 5, 6, 4, 3, 0, 2, 0},
-    };
-}
-
-inline Fixture fixture(const std::string& name) {
-    for (auto& f : manifold_fixtures())
-        if (f.name == name) return f;
-    throw std::logic_error("no fixture named " + name);
-}
-
 // Builds the mesh of `soup` (named `what` in messages) and fails the test (with validate()'s message) if it does not
 // validate.
 inline Mesh build_valid(const PolygonSoup& soup, const std::string& what) {
@@ -185,6 +42,23 @@ inline Mesh build_valid(const PolygonSoup& soup, const std::string& what) {
     return m;
 }
 inline Mesh build_valid(const Fixture& f) { return build_valid(f.soup, "fixture '" + f.name + "'"); }
+
+// The mesh of two_tori() (fixtures.hpp) from stored connectivity.
+inline Mesh two_tori_mesh() {
+    Mesh m = disjoint_union(stored_mesh("torus(8 x 6 triangles)", fx::torus(8, 6)),
+                            stored_mesh("torus(7 x 5 triangles)", fx::torus(7, 5)), {5, 0, 0});
+    check_connectivity_matches_soup(m, two_tori(), "two tori");
+    return m;
+}
+
+// The mesh of tetrahedra_in_a_row(n) (fixtures.hpp), followed by `then` (positions moved by 3n along x), from stored
+// connectivity.
+inline Mesh tetrahedra_in_a_row_mesh(int n, const Mesh& then = Mesh{}) {
+    const Mesh tet = stored_mesh("tetrahedron", fx::tetrahedron());
+    Mesh m;
+    for (int i = 0; i < n; ++i) m = disjoint_union(m, tet, {3.0 * i, 0, 0});
+    return disjoint_union(m, then, {3.0 * n, 0, 0});
+}
 
 // ---- brute-force references from the soup ---------------------------------------------------------------------
 
@@ -356,6 +230,55 @@ inline std::string build_error_message(const PolygonSoup& soup) {
 }
 
 inline bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+
+// The faces of `soup` that use vertex v.
+inline std::set<std::uint32_t> faces_at(const PolygonSoup& soup, std::uint32_t v) { return vertex_faces(soup)[v]; }
+
+// Checks build_mesh's complex-vertex message for `soup`: exactly the header's format, naming vertex v and two
+// different faces at v that lie in different fans, i.e. fan_of(A) != fan_of(B) (fan_of: the instructor's labelling
+// of the faces at v, e.g. which of two solids sharing v a face belongs to).
+template <class FanOf>
+void check_complex_vertex_message(const PolygonSoup& soup, std::uint32_t v, FanOf fan_of) {
+    const std::string msg = build_error_message(soup);
+    CAPTURE(msg);
+    std::smatch m;
+    static const std::regex format(
+        R"(build_mesh: complex vertex (\d+): its faces form more than one fan \(face (\d+) and face (\d+) are in different fans\))");
+    REQUIRE_MESSAGE(std::regex_match(msg, m, format),
+                    "expected the message 'build_mesh: complex vertex " << v << ": its faces form more than one fan "
+                    "(face A and face B are in different fans)', got '" << msg << "'");
+    CHECK_MESSAGE(std::stoul(m[1]) == v, "expected complex vertex " << v << ", got vertex " << m[1]);
+    const std::uint32_t a = std::uint32_t(std::stoul(m[2])), b = std::uint32_t(std::stoul(m[3]));
+    const auto at_v = faces_at(soup, v);
+    REQUIRE_MESSAGE((at_v.count(a) && at_v.count(b)),
+                    "faces " << a << " and " << b << " must both use vertex " << v);
+    CHECK_MESSAGE(fan_of(a) != fan_of(b), "faces " << a << " and " << b << " are in the same fan around vertex " << v);
+}
+
+// Checks build_mesh's inconsistent-orientation message for `soup`: exactly the header's format, naming two
+// different faces that both use the directed edge u->v it names, one of them `flipped`.
+inline void check_orientation_message(const PolygonSoup& soup, std::size_t flipped) {
+    const std::string msg = build_error_message(soup);
+    CAPTURE(msg);
+    std::smatch m;
+    static const std::regex format(
+        R"(build_mesh: inconsistent orientation: face (\d+) and face (\d+) both use the directed edge from vertex (\d+) to vertex (\d+))");
+    REQUIRE_MESSAGE(std::regex_match(msg, m, format),
+                    "expected the message 'build_mesh: inconsistent orientation: face A and face B both use the "
+                    "directed edge from vertex u to vertex v', got '" << msg << "'");
+    const std::size_t a = std::stoul(m[1]), b = std::stoul(m[2]);
+    const std::uint32_t u = std::uint32_t(std::stoul(m[3])), v = std::uint32_t(std::stoul(m[4]));
+    CHECK_MESSAGE(a != b, "the message names face " << a << " twice: it must name the two faces that disagree");
+    CHECK_MESSAGE((a == flipped || b == flipped), "face " << flipped << " (the flipped one) is not named");
+    for (std::size_t f : {a, b}) {
+        bool uses = false;
+        if (f < soup.n_faces()) {
+            const auto c = soup.face(f);
+            for (std::size_t i = 0; i < c.size(); ++i) uses |= c[i] == u && c[(i + 1) % c.size()] == v;
+        }
+        CHECK_MESSAGE(uses, "face " << f << " does not use the directed edge " << u << "->" << v);
+    }
+}
 
 // ---- real models ------------------------------------------------------------------------------------------------
 // A model test needs the CGAL meshes in data/models (tools/fetch_models.sh, the README's first command). When a

@@ -1,4 +1,6 @@
 // Lab 01, Task 1: build_mesh (handout §3). Every test first builds valid meshes, so a stub fails them all.
+// The last test is the lab's one end-to-end check (your build_mesh, then your queries on a real scan); every test
+// of Tasks 2-5 gets its mesh without your build_mesh (stored.hpp).
 #include "helpers.hpp"
 
 using namespace lab01;
@@ -17,7 +19,7 @@ TEST_SUITE("Task 1: build the mesh") {
         for (Vertex v : m.vertices()) CHECK(m.position(v) == f.soup.positions[v.idx]);
     }
 
-    TEST_CASE("build_mesh: validate passes on every fixture of the family" * geolab::points(4) *
+    TEST_CASE("build_mesh: validate passes on every fixture of the family" * geolab::points(3) *
               geolab::hint("Read validate()'s message: it names the first broken invariant and the element. "
                            "Handout §3.4 lists the invariants.")) {
         for (const Fixture& f : manifold_fixtures()) {
@@ -39,7 +41,7 @@ TEST_SUITE("Task 1: build the mesh") {
         }
     }
 
-    TEST_CASE("build_mesh: each face's next cycle visits the soup face in order" * geolab::points(4) *
+    TEST_CASE("build_mesh: each face's next cycle visits the soup face in order" * geolab::points(3) *
               geolab::hint("halfedge(f) goes from soup.face(f)[0] to soup.face(f)[1]; next goes on to [2], ... and "
                            "from the last corner back to the first (counter-clockwise). Handout §3.2.")) {
         for (const Fixture& f : manifold_fixtures()) {
@@ -97,7 +99,7 @@ TEST_SUITE("Task 1: build the mesh") {
         }
     }
 
-    TEST_CASE("build_mesh: the boundary half-edges of a grid form one closed loop" * geolab::points(3) *
+    TEST_CASE("build_mesh: the boundary half-edges of a grid form one closed loop" * geolab::points(2) *
               geolab::hint("An unmatched u->v gets a boundary twin v->u (no face). Its next is the boundary half-edge "
                            "leaving u, so each hole becomes a loop like a face. Handout §3.3.")) {
         for (auto [nx, ny] : {std::pair{4, 4}, std::pair{3, 2}}) {
@@ -141,7 +143,7 @@ TEST_SUITE("Task 1: build the mesh") {
                 REQUIRE(m.halfedge(v).is_valid());
                 CHECK(m.from_vertex(m.halfedge(v)) == v);
                 CHECK_MESSAGE(m.is_boundary(m.halfedge(v)) == bool(on_boundary[v.idx]),
-                              (on_boundary[v.idx] ? "boundary vertex whose halfedge(v) has a face"
+                              std::string(on_boundary[v.idx] ? "boundary vertex whose halfedge(v) has a face"
                                                   : "interior vertex whose halfedge(v) is a boundary half-edge"));
             }
         }
@@ -187,9 +189,10 @@ TEST_SUITE("Task 1: build the mesh") {
         CHECK(contains(msg, "face 2"));
     }
 
-    TEST_CASE("build_mesh: a flipped face is rejected as inconsistent orientation naming that face" *
+    TEST_CASE("build_mesh: a flipped face is rejected as inconsistent orientation naming it and its neighbour" *
               geolab::points(2) *
-              geolab::hint("A directed edge u->v used by two faces means they disagree on orientation.")) {
+              geolab::hint("A directed edge u->v used by two faces means they disagree on orientation: name those two "
+                           "faces (two different ones) and that edge.")) {
         build_valid(fx::tetrahedron(), "tetrahedron");
         struct Case {
             const char* name;
@@ -199,16 +202,26 @@ TEST_SUITE("Task 1: build the mesh") {
         for (const Case& c : {Case{"cube (quads) with face 3 flipped", fx::flip_face(fx::cube(false), 3), 3},
                               Case{"icosphere(1) with face 57 flipped", fx::flip_face(fx::icosphere(1), 57), 57},
                               Case{"grid(3 x 3) with face 8 flipped", fx::flip_face(fx::grid(3, 3), 8), 8}}) {
-            INFO(c.name);
+            INFO(std::string(c.name));
             CHECK_THROWS_AS(build_mesh(c.soup), geolab::TopologyError);
             const std::string msg = build_error_message(c.soup);
             CAPTURE(msg);
             CHECK(contains(msg, "inconsistent orientation"));
             CHECK(contains(msg, "face " + std::to_string(c.flipped) + " "));
         }
+        // Face 0 flipped: it has the lowest index of the faces on its edges.
+        for (const Case& c : {Case{"tetrahedron with face 0 flipped", fx::flip_face(fx::tetrahedron(), 0), 0},
+                              Case{"cube (quads) with face 0 flipped", fx::flip_face(fx::cube(false), 0), 0},
+                              Case{"icosphere(1) with face 0 flipped", fx::flip_face(fx::icosphere(1), 0), 0},
+                              Case{"grid(3 x 3) with face 0 flipped", fx::flip_face(fx::grid(3, 3), 0), 0},
+                              Case{"grid(3 x 3) with face 8 flipped", fx::flip_face(fx::grid(3, 3), 8), 8}}) {
+            INFO(std::string(c.name));
+            CHECK_THROWS_AS(build_mesh(c.soup), geolab::TopologyError);
+            check_orientation_message(c.soup, c.flipped);
+        }
     }
 
-    TEST_CASE("build_mesh: invalid soups are rejected with std::invalid_argument" * geolab::points(2) *
+    TEST_CASE("build_mesh: invalid soups are rejected with std::invalid_argument" * geolab::points(1) *
               geolab::hint("Call geolab::check_soup(soup) first: it rejects bad indices and degenerate faces.")) {
         build_valid(fx::tetrahedron(), "tetrahedron");
         PolygonSoup out_of_range = fx::tetrahedron();
@@ -220,6 +233,83 @@ TEST_SUITE("Task 1: build the mesh") {
         for (const auto* s : {&out_of_range, &two_corners, &repeated}) {
             INFO(mesh_to_string(*s));
             CHECK_THROWS_AS(build_mesh(*s), std::invalid_argument);
+        }
+    }
+
+    TEST_CASE("build_mesh: a complex edge inside a larger mesh is reported with exactly the faces on it" *
+              geolab::points(2) *
+              geolab::hint("List every face that uses u->v or v->u, each once, in increasing order: the message is "
+                           "'complex edge between vertex u and vertex v: used by face A, face B, face C (a manifold "
+                           "edge has at most 2 faces)' with u < v.")) {
+        build_valid(fx::tetrahedron(), "tetrahedron");
+        // icosphere(1) plus extra triangles hung on one of its edges, each with a new vertex; the extra faces first or
+        // last, running either way along the edge.
+        const PolygonSoup sphere = fx::icosphere(1);
+        const auto c0 = sphere.face(17);
+        const std::uint32_t u = c0[0], v = c0[1], w = std::uint32_t(sphere.n_vertices());
+        struct Case {
+            const char* name;
+            std::vector<std::vector<std::uint32_t>> extra;
+            bool extra_first;
+        };
+        for (const Case& c : {Case{"one extra face u->v, last", {{u, v, w}}, false},
+                              Case{"one extra face v->u, first", {{v, u, w}}, true},
+                              Case{"two extra faces, last", {{v, u, w}, {u, v, w + 1}}, false},
+                              Case{"two extra faces, first", {{w, u, v}, {w + 1, v, u}}, true}}) {
+            PolygonSoup soup;
+            soup.positions = sphere.positions;
+            for (std::size_t i = 0; i < c.extra.size(); ++i) soup.positions.push_back({0.1 * double(i), 2.0, 0.0});
+            if (c.extra_first)
+                for (const auto& f : c.extra) soup.add_face(f);
+            for (std::size_t f = 0; f < sphere.n_faces(); ++f) soup.add_face(sphere.face(f));
+            if (!c.extra_first)
+                for (const auto& f : c.extra) soup.add_face(f);
+            // The faces on the edge, by brute force.
+            std::string list;
+            int n = 0;
+            for (std::size_t f = 0; f < soup.n_faces(); ++f) {
+                const auto vs = soup.face(f);
+                bool on_edge = false;
+                for (std::size_t i = 0; i < vs.size(); ++i) {
+                    const auto a = vs[i], b = vs[(i + 1) % vs.size()];
+                    on_edge |= (a == u && b == v) || (a == v && b == u);
+                }
+                if (on_edge) list += (n++ ? ", face " : "face ") + std::to_string(f);
+            }
+            const std::string expect = "build_mesh: complex edge between vertex " + std::to_string(std::min(u, v)) +
+                                       " and vertex " + std::to_string(std::max(u, v)) + ": used by " + list +
+                                       " (a manifold edge has at most 2 faces)";
+            INFO("icosphere(1) (80 faces) with " << std::string(c.name) << " on its edge " << u << "-" << v << " (" << n
+                                                 << " faces on it)");
+            CHECK_THROWS_AS(build_mesh(soup), geolab::TopologyError);
+            const std::string msg = build_error_message(soup);
+            CHECK_MESSAGE(msg == expect, "expected '" << expect << "', got '" << msg << "'");
+        }
+    }
+
+    TEST_CASE("whole chain: bunny00 and holes built by your build_mesh answer your queries like brute force" *
+              geolab::points(2) * geolab::time_limit(60) *
+              geolab::hint("The lab's one end-to-end test: your build_mesh on two real scans (bunny00 is closed, holes "
+                           "has 7 boundary loops), then your Task 3 functions on them. If the other tests pass and "
+                           "this fails, look at boundary vertices and holes.")) {
+        for (const char* name : {"bunny00", "holes"}) {
+            const PolygonSoup soup = load_model(name);
+            INFO("model " << std::string(name) << ": " << soup.n_vertices() << " vertices, " << soup.n_faces() << " faces");
+            const Mesh m = build_valid(soup, name);
+            const int chi = int(soup.n_vertices()) - int(undirected_edges(soup).size()) + int(soup.n_faces());
+            CHECK_MESSAGE(euler_characteristic(m) == chi, "euler_characteristic: expected " << chi << ", got "
+                                                                                            << euler_characteristic(m));
+            const int loops = count_boundary_loops(soup);
+            CHECK_MESSAGE(int(boundary_loops(m).size()) == loops,
+                          "boundary_loops: expected " << loops << " loops, got " << boundary_loops(m).size());
+            const auto roots = component_roots(soup);
+            const int components = int(std::set<std::uint32_t>(roots.begin(), roots.end()).size());
+            CHECK_MESSAGE(connected_components(m).count == components,
+                          "connected_components: expected " << components << ", got " << connected_components(m).count);
+            if (components == 1)
+                CHECK_MESSAGE(genus(m) == (2 - chi - loops) / 2,
+                              "genus: expected " << (2 - chi - loops) / 2 << ", got " << genus(m));
+            check_valence_histogram(m, soup);
         }
     }
 

@@ -1,4 +1,5 @@
-// Lab 01, Task 2: the lecture's queries (handout §4).
+// Lab 01, Task 2: the lecture's queries (handout §4). Meshes from stored connectivity (stored.hpp), never from
+// your build_mesh.
 #include "helpers.hpp"
 
 using namespace lab01;
@@ -11,7 +12,7 @@ TEST_SUITE("Task 2: the lecture's queries") {
                      "halfedge(e, 0) and halfedge(e, 1), invalid where there is a hole.")) {
         for (const Fixture& f : manifold_fixtures()) {
             INFO(describe(f));
-            const Mesh m = build_valid(f);
+            const Mesh m = stored_mesh(f);
             const auto face_of = face_of_directed_edge(f.soup);
             std::set<VertexPair> seen;
             for (Edge e : m.edges()) {
@@ -42,7 +43,7 @@ TEST_SUITE("Task 2: the lecture's queries") {
         std::vector<Halfedge> buffer{Halfedge{7}, Halfedge{3}};  // reused across calls, must be cleared each time
         for (const Fixture& f : manifold_fixtures()) {
             INFO(describe(f));
-            const Mesh m = build_valid(f);
+            const Mesh m = stored_mesh(f);
             for (Face face : m.faces()) {
                 CAPTURE(face);
                 face_halfedges(m, face, buffer);
@@ -67,7 +68,7 @@ TEST_SUITE("Task 2: the lecture's queries") {
         std::vector<Halfedge> buffer{Halfedge{1}};
         for (const Fixture& f : manifold_fixtures()) {
             INFO(describe(f));
-            const Mesh m = build_valid(f);
+            const Mesh m = stored_mesh(f);
             const auto nb = neighbours(f.soup);
             for (Vertex v : m.vertices()) {
                 CAPTURE(v);
@@ -88,7 +89,7 @@ TEST_SUITE("Task 2: the lecture's queries") {
             }
         }
         // On the tetrahedron, the faces at vertex 0 are 0 1 2, 0 3 1, 0 2 3: next(twin(0->1)) = 0->3, then 0->2.
-        const Mesh tet = build_valid(fx::tetrahedron(), "tetrahedron");
+        const Mesh tet = stored_mesh("tetrahedron", fx::tetrahedron());
         std::vector<std::uint32_t> ends;
         for (Halfedge h : outgoing_halfedges(tet, Vertex{0})) ends.push_back(tet.to_vertex(h).idx);
         INFO("tetrahedron vertex 0: the ends of its outgoing half-edges must be a rotation of 1 3 2");

@@ -1,4 +1,5 @@
-// Lab 01, Task 5: uniform Laplacian smoothing (handout §7).
+// Lab 01, Task 5: uniform Laplacian smoothing (handout §7). Meshes from stored connectivity (stored.hpp), never
+// from your build_mesh.
 #include "helpers.hpp"
 
 using namespace lab01;
@@ -13,7 +14,7 @@ double max_distance(const std::vector<glm::dvec3>& a, const std::vector<glm::dve
 
 TEST_SUITE("Task 5: smoothing") {
     TEST_CASE("smoothing: one step on an octahedron with a raised top matches the hand computation" *
-              geolab::points(4) *
+              geolab::points(3) *
               geolab::hint("Compute every L(v) from the OLD positions (keep a copy), then move: v + t (mean of the "
                            "neighbours - v). Moving vertices one by one in place gives different numbers.")) {
         // Vertices +-x (0, 1), +-y (2, 3), +-z (4, 5), all of valence 4; the top is raised to (0,0,2). With t = 1/2:
@@ -23,7 +24,7 @@ TEST_SUITE("Task 5: smoothing") {
         PolygonSoup soup = octahedron();
         soup.positions[4] = {0, 0, 2};
         INFO(mesh_to_string(soup));
-        Mesh m = build_valid(soup, "octahedron");
+        Mesh m = stored_mesh("octahedron", soup);
         laplacian_smoothing(m, 0.5);
         const std::vector<glm::dvec3> expect = {{0.5, 0, 0.125},  {-0.5, 0, 0.125}, {0, 0.5, 0.125},
                                                 {0, -0.5, 0.125}, {0, 0, 1},        {0, 0, -0.5}};
@@ -37,7 +38,7 @@ TEST_SUITE("Task 5: smoothing") {
     TEST_CASE("smoothing: t = 0 changes nothing and bad arguments throw std::invalid_argument" * geolab::points(2) *
               geolab::hint("Check t in [0, 1] (NaN is not) and iterations >= 0 before anything else.")) {
         const PolygonSoup soup = fx::icosphere(1);
-        Mesh m = build_valid(soup, "icosphere(1)");
+        Mesh m = stored_mesh("icosphere(1)", soup);
         laplacian_smoothing(m, 0.0, 3);
         CHECK(m.positions() == soup.positions);
         laplacian_smoothing(m, 0.7, 0);
@@ -58,13 +59,13 @@ TEST_SUITE("Task 5: smoothing") {
         const auto on_boundary = boundary_vertices(soup);
         for (std::size_t v = 0; v < soup.n_vertices(); ++v)
             if (!on_boundary[v]) soup.positions[v] += 0.04 * glm::dvec3(std::sin(3.0 * v), std::cos(5.0 * v), 0.0);
-        Mesh m = build_valid(soup, "jittered grid(6, 6)");
+        Mesh m = stored_mesh("grid(6 x 6)", soup);
         laplacian_smoothing(m, 0.5, 3);
         auto ref = soup.positions;
         for (int i = 0; i < 3; ++i) ref = reference_smoothing_step(soup, ref, 0.5);
         for (Vertex v : m.vertices()) {
             CAPTURE(v);
-            INFO((on_boundary[v.idx] ? "boundary vertex" : "interior vertex")
+            INFO(std::string(on_boundary[v.idx] ? "boundary vertex" : "interior vertex")
                  << ": expected " << str(ref[v.idx]) << ", got " << str(m.position(v)));
             CHECK(m.position(v).z == 0.0);
             if (on_boundary[v.idx]) CHECK(m.position(v) == soup.positions[v.idx]);
@@ -72,11 +73,11 @@ TEST_SUITE("Task 5: smoothing") {
         }
     }
 
-    TEST_CASE("smoothing: a sphere keeps its centroid and shrinks" * geolab::points(3) *
+    TEST_CASE("smoothing: a sphere keeps its centroid and shrinks" * geolab::points(2) *
               geolab::hint("Uniform Laplacian smoothing moves every vertex toward the mean of its neighbours: a closed "
                            "convex surface shrinks; a symmetric one keeps its centre.")) {
         const PolygonSoup soup = fx::icosphere(2);
-        Mesh m = build_valid(soup, "icosphere(2)");
+        Mesh m = stored_mesh("icosphere(2)", soup);
         laplacian_smoothing(m, 0.5, 2);
         const auto ref = reference_smoothing_step(soup, reference_smoothing_step(soup, soup.positions, 0.5), 0.5);
         {  // the picture in the report: your smoothed sphere next to the expected one
@@ -95,6 +96,37 @@ TEST_SUITE("Task 5: smoothing") {
         CHECK(mean_radius < 0.999);
         CHECK(mean_radius > 0.9);
         CHECK(max_distance(m.positions(), ref) < 1e-12);
+    }
+
+    TEST_CASE("smoothing: t = 1 is allowed and moves every interior vertex onto the centroid of its neighbours" *
+              geolab::points(2) *
+              geolab::hint("t may be anything in [0, 1], both ends included: with t = 1, v + 1 (mean - v) = the mean of "
+                           "the neighbours (old positions).")) {
+        // The octahedron with its top raised to (0,0,2), t = 1: top and bottom go to the mean of the equator, 0;
+        // +x goes to the mean of +-y, top and bottom, (0, 0, 0.25); the same for the other equator vertices.
+        PolygonSoup soup = octahedron();
+        soup.positions[4] = {0, 0, 2};
+        INFO(mesh_to_string(soup));
+        Mesh m = stored_mesh("octahedron", soup);
+        REQUIRE_NOTHROW(laplacian_smoothing(m, 1.0));
+        for (Vertex v : m.vertices()) {
+            const glm::dvec3 expect = v.idx < 4 ? glm::dvec3(0, 0, 0.25) : glm::dvec3(0.0);
+            CAPTURE(v);
+            INFO("octahedron, t = 1: expected " << str(expect) << ", got " << str(m.position(v)));
+            CHECK(glm::length(m.position(v) - expect) < 1e-12);
+        }
+        // The open pyramid, 2 iterations with t = 1: its only interior vertex, the apex, goes onto the centre of the
+        // rim (0, 0, 0) and stays there; the rim does not move. Compared with brute-force steps on the soup.
+        const Fixture box = fixture("open pyramid");
+        Mesh mb = stored_mesh(box);
+        REQUIRE_NOTHROW(laplacian_smoothing(mb, 1.0, 2));
+        const auto ref =
+            reference_smoothing_step(box.soup, reference_smoothing_step(box.soup, box.soup.positions, 1.0), 1.0);
+        for (Vertex v : mb.vertices()) {
+            CAPTURE(v);
+            INFO("open pyramid, t = 1, 2 iterations: expected " << str(ref[v.idx]) << ", got " << str(mb.position(v)));
+            CHECK(glm::length(mb.position(v) - ref[v.idx]) < 1e-12);
+        }
     }
 
 }  // TEST_SUITE

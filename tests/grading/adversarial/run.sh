@@ -5,6 +5,8 @@
 #   full           the attack is harmless and the code is right: the full score
 #   stub           the code does not do its job: exactly the score of the reference with smoothing.cpp left a stub
 #   compile_error  score 0, status "compile error", the compiler's message in results.json
+#   only_task_N    an honest bug in Task N's file (the case may replace any lab file): it loses points in Task N
+#                  and nowhere else (DESIGN.md rule 6: tasks are graded independently)
 # Afterwards: no process of the sandbox uids is left, nothing was written into the course tree or the build.
 # Usage: run.sh GEOLAB SOURCE_DIR BUILD_DIR
 set -uo pipefail
@@ -17,6 +19,12 @@ fails=0
 fail() { echo "FAIL: $*"; fails=$((fails + 1)); }
 score_of() { grep -m1 '^  "score"' "$1" | sed 's/[^0-9.]//g'; }
 max_of() { grep -m1 '^  "max_score"' "$1" | sed 's/[^0-9.]//g'; }
+# lost_by_task FILE N: "points lost in Task N" "points lost in the other tasks" (results.json: each test's
+# max_score and score come before its tags, whose last entry is its task)
+lost_by_task() {
+  awk -v t="\"Task $2:" '/^      "max_score":/ { m = $2 + 0 } /^      "score":/ { s = $2 + 0 }
+    /^        "Task [0-9]+:/ { if (index($0, t)) lt += m - s; else lo += m - s } END { printf "%g %g\n", lt, lo }' "$1"
+}
 same() { awk -v a="$1" -v b="$2" 'BEGIN { exit !(a != "" && b != "" && a + 0 == b + 0) }'; }
 grade() {  # grade DIR NAME [extra args]: writes $out/NAME.json and NAME.log
   local dir=$1 name=$2; shift 2
@@ -50,6 +58,12 @@ for case_dir in "$here"/*/; do
   case $expect in
     full) want=$full ;;
     stub) want=$stub ;;
+    only_task_*) task=${expect#only_task_}
+      read -r lost_task lost_other < <(lost_by_task "$out/$name.json" "$task")
+      echo "     $name: loses $lost_task points in Task $task and $lost_other in the other tasks"
+      [ "$lost_other" = 0 ] || fail "$name: a bug in Task $task costs $lost_other points in other tasks"
+      [ "$lost_task" != 0 ] || fail "$name: the bug in Task $task costs nothing (no test sees it?)"
+      want=$(awk -v f="$full" -v l="$lost_task" 'BEGIN { print f - l }') ;;
     compile_error) want=0
       grep -q '"output": "status: compile error' "$out/$name.json" || fail "$name: status is not 'compile error'"
       grep -q 'smoothing.cpp:[0-9]*:[0-9]*: error' "$out/$name.json" || fail "$name: the compiler's message is not in results.json" ;;
