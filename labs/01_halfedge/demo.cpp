@@ -1055,7 +1055,10 @@ int main(int argc, char** argv) {
     if (!gr::limit_demo_memory(memory_mb)) std::cerr << "demo_01_halfedge: could not cap the memory; running without\n";
 
     try {
-        if (!figures.empty()) return render_figures(figures, width, height);
+        if (!figures.empty()) {
+            gr::check_figure_dir(figures);
+            return render_figures(figures, width, height);
+        }
 
         if (input.empty()) input = geolab::model_path("bunny00") ? "bunny00" : "icosphere";
         Demo d(input, load(input));

@@ -991,7 +991,10 @@ int main(int argc, char** argv) {
     if (!gr::limit_demo_memory(memory_mb)) std::cerr << "demo_09_spherical_dc: could not cap the memory; running without\n";
 
     try {
-        if (!figures.empty()) return render_figures(figures, width, height);
+        if (!figures.empty()) {
+            gr::check_figure_dir(figures);
+            return render_figures(figures, width, height);
+        }
         Demo d{load(input.empty() ? "blob" : input)};
         d.level = level;
         const char* views[] = {"", "cells", "origin", "poles", "compare", "octree"};

@@ -50,6 +50,9 @@ mapfile -t commands < <(awk '/^```sh$/ { on = 1; next } on && /^```$/ { exit } o
 [ ${#commands[@]} -eq 2 ] || fail "the release's README should give two commands, its first sh block has ${#commands[@]}"
 [ -d "$src/data/models" ] && [ ! -e "$rel/data/models" ] && ln -s "$(cd "$src/data/models" && pwd)" "$rel/data/models"
 export GEOLAB_CMAKE_ARGS="-DGEOLAB_BENCHMARKS=OFF -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_FLAGS=-O0 ${GEOLAB_CMAKE_ARGS:-}"
+if command -v ccache >/dev/null; then  # paths relative to the scratch folder, so that a rerun hits the cache
+  export CMAKE_C_COMPILER_LAUNCHER=ccache CMAKE_CXX_COMPILER_LAUNCHER=ccache CCACHE_BASEDIR=$scratch
+fi
 
 step "command 1: ${commands[0]}"
 (cd "$rel" && bash -c "${commands[0]}") >"$scratch/command1.log" 2>&1 ||
@@ -63,6 +66,10 @@ for d in "$rel"/labs/[0-9][0-9]_*/; do
   [ -f "$d/demo.cpp" ] || continue
   ls "$rel/out/figures/$lab"/*.png >/dev/null 2>&1 || fail "command 1 rendered no figure of $lab into out/figures/$lab"
 done
+# A student following an instructor's line must not overwrite the handouts' figures either.
+rc=0; (cd "$rel" && build/bin/demo_01_halfedge --figures docs/labs/figures/01_halfedge) >"$scratch/figs.log" 2>&1 || rc=$?
+[ $rc -ne 0 ] && grep -q "inside docs/" "$scratch/figs.log" ||
+  { cat "$scratch/figs.log"; fail "the student's demo rendered over the handout's figures in docs/"; }
 changed=$(git -C "$rel" status --porcelain --untracked-files=all | grep -v '^?? data/models$' || true)
 [ -z "$changed" ] || fail "command 1 changed or added files outside out/ and build/: $changed"
 

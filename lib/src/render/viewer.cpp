@@ -17,6 +17,7 @@
 #include <sys/resource.h>
 
 #include "context.hpp"
+#include "geolab/config.hpp"
 #include "geolab/grading/runner.hpp"
 #include "renderer.hpp"
 
@@ -356,6 +357,18 @@ void Viewer::size(int& width, int& height, int& fb_width, int& fb_height) const 
 }
 
 std::filesystem::path screenshot_dir() { return std::filesystem::path("out") / "screenshots"; }
+
+void check_figure_dir(const std::filesystem::path& dir) {
+    namespace fs = std::filesystem;
+    if (config::has_solutions) return;  // the instructor renders the handouts' figures on purpose
+    std::error_code ec;
+    const fs::path docs = fs::weakly_canonical(fs::path(config::source_dir) / "docs", ec);
+    const fs::path target = fs::weakly_canonical(fs::absolute(dir), ec);
+    const auto rel = target.lexically_relative(docs);
+    if (!ec && !rel.empty() && *rel.begin() != "..")
+        throw std::runtime_error(dir.string() + " is inside docs/, which holds the handouts' figures (the "
+                                 "reference's): write yours elsewhere, e.g. --figures out/figures/NN_name");
+}
 
 std::size_t default_demo_memory_mb() { return grading::RunOptions{}.memory_mb; }
 

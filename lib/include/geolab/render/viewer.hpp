@@ -46,6 +46,11 @@ std::string memory_limit_message(const std::string& where);
 //! The folder the S key writes screenshots into: out/screenshots under the working directory.
 std::filesystem::path screenshot_dir();
 
+//! Checks a demo's --figures folder. In the student release (a build without solutions/) the handouts' figures
+//! under docs/ are the reference's and must stay: a folder inside the course tree's docs/ is refused.
+//! \throw std::runtime_error naming the folder and pointing to out/figures/.
+void check_figure_dir(const std::filesystem::path& dir);
+
 //! A window showing a Scene with an orbit camera. One Viewer at a time per thread; all calls from the thread
 //! that created it.
 class Viewer {
