@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <functional>
 #include <iostream>
+#include <new>
 #include <optional>
 #include <random>
 #include <regex>
@@ -95,6 +96,8 @@ bool attempt(Issues& issues, const std::string& function, F&& f) {
     } catch (const geolab::NotImplemented&) {
         if (std::find(issues.missing.begin(), issues.missing.end(), function) == issues.missing.end())
             issues.missing.push_back(function);
+    } catch (const std::bad_alloc&) {
+        issues.errors.push_back(gr::memory_limit_message(function));
     } catch (const std::exception& e) {
         issues.errors.push_back(function + " threw: " + e.what());
     }
@@ -273,6 +276,8 @@ struct Demo {
         } catch (const geolab::TopologyError& e) {
             build_problem = std::string("rejected: ") + e.what();
             rejection = parse_rejection(e.what());
+        } catch (const std::bad_alloc&) {
+            build_problem = gr::memory_limit_message("build_mesh");
         } catch (const std::exception& e) {
             build_problem = std::string("build_mesh threw: ") + e.what();
         }
@@ -436,6 +441,21 @@ void add_halfedge_arrow(std::vector<vec3>& seg, std::vector<vec3>& col, const Me
     add_arrow(seg, col, a + shift, b + shift, sign * inward, color, 0.14, 0.2, true);
 }
 
+// The direction to look at the face left of h from (for the camera only, not a face normal of Task 4): the unit
+// normal of the triangle from_vertex(h), to_vertex(h), to_vertex(next(h)), or of the next corner triple when that
+// one is degenerate; nullopt when every triple is.
+std::optional<dvec3> view_normal(const Mesh& m, Halfedge h) {
+    Halfedge x = h;
+    for (int k = 0; k < 64; ++k, x = m.next(x)) {
+        const dvec3 a = m.position(m.from_vertex(x)), b = m.position(m.to_vertex(x));
+        const dvec3 c = m.position(m.to_vertex(m.next(x)));
+        const dvec3 n = glm::cross(b - a, c - b);
+        if (glm::length(n) > 1e-12 * glm::dot(b - a, b - a) + 1e-300) return glm::normalize(n);
+        if (m.next(x) == h) break;
+    }
+    return std::nullopt;
+}
+
 struct View {
     gr::Scene scene;
     std::string status;
@@ -579,6 +599,8 @@ View draw(const Demo& d) {
             st << "h" << h.idx << ": " << m.from_vertex(h) << " → " << m.to_vertex(h) << ", twin h" << t.idx
                << ", next h" << n.idx << ", face " << m.face(h) << ", edge " << m.edge(h);
             out.focus = 0.5 * (m.position(m.from_vertex(h)) + m.position(m.to_vertex(h)));
+            // zoom onto the face of h (of its twin on the boundary), seen face-on, so both arrows show
+            out.focus_normal = view_normal(m, m.is_boundary(h) ? t : h);
         }
     } else if (d.mode == Mode::vertex && d.vertex && *d.vertex < P.size()) {
         big.push_back(vec3(P[*d.vertex])), big_col.push_back(kVertex);
@@ -911,9 +933,14 @@ int render_figures(const std::filesystem::path& dir, int width, int height) {
 // ---- the window ------------------------------------------------------------------------------------------------------
 
 const char* kKeys =
-    "keys: V vertex mode, F face mode, H half-edge mode (then N next, T twin, P prev, O next(twin) = turn around "
-    "from_vertex), click = pick, B boundary loops on/off, W wireframe on/off, Space one smoothing iteration, "
-    "R reset, J jitter (add noise), Z zoom to the selection, Home whole mesh, S screenshot, Esc quit";
+    "Window keys:\n"
+    "  click           pick a vertex / face / half-edge (left drag orbits, right drag pans, wheel zooms)\n"
+    "  V, F, H         vertex mode (one-ring), face mode (half-edges, neighbours), half-edge mode\n"
+    "  N, T, P, O      half-edge mode: go to next(h), twin(h), prev(h), next(twin(h))\n"
+    "  B, W            boundary loops on/off, wireframe on/off\n"
+    "  Space, R, J     one smoothing iteration, reset, jitter (add noise)\n"
+    "  Z, Home         zoom onto the selection (face-on), whole mesh\n"
+    "  S, Esc          screenshot (out/screenshots/), quit";
 
 // Applies key `key`; returns true when the camera should zoom to the selection.
 bool on_key(Demo& d, int key) {
@@ -945,7 +972,7 @@ bool on_key(Demo& d, int key) {
 }
 
 int run_window(Demo& d, int frames, const std::string& screenshot, const std::string& keys, double zoom) {
-    gr::Viewer viewer("geolab demo 01: half-edge meshes", 1280, 960);
+    gr::Viewer viewer("geolab demo 01: half-edge meshes", 960, 720);
     std::cout << kKeys << "\n";
     auto refresh = [&](bool reframe, bool to_selection) {
         if (to_selection && !d.wireframe) d.wireframe = true;  // close up: show the edges
@@ -970,6 +997,11 @@ int run_window(Demo& d, int frames, const std::string& screenshot, const std::st
     });
     if (frames > 0) {  // scripted: keys, a few frames, a screenshot
         for (char c : keys) {
+            if (c == 'S' || c == 's') {  // as the window's S key
+                viewer.run_frames(1);
+                std::cout << "wrote " << viewer.save_screenshot().string() << "\n";
+                continue;
+            }
             const bool zoom_now = on_key(d, c == '_' ? ' ' : std::toupper(static_cast<unsigned char>(c)));
             refresh(false, zoom_now);
         }
@@ -1009,16 +1041,24 @@ int main(int argc, char** argv) {
     app.add_option("--zoom", zoom,
                    "Frame the selection, R × its radius (0: the whole mesh; default 2.5 with --png and a selection)");
     app.add_option("--size", width, "PNG width (height = 3/4 of it)")->capture_default_str();
+    std::size_t memory_mb = gr::default_demo_memory_mb();
+    app.add_option("--memory-mb", memory_mb, "Address-space cap for your code, MiB (0: none; default: the grader's)")
+        ->capture_default_str();
     bool no_boundary = false;
     app.add_flag("--no-boundary", no_boundary, "Do not draw the boundary loops");
     app.add_option("--frames", frames, "(testing) draw N frames in the window, then exit")->group("");
     app.add_option("--screenshot", screenshot, "(testing) with --frames: save the window to this PNG")->group("");
     app.add_option("--keys", keys, "(testing) with --frames: press these keys first ('_' = Space)")->group("");
+    app.footer(kKeys);
     CLI11_PARSE(app, argc, argv);
     height = width * 3 / 4;
+    if (!gr::limit_demo_memory(memory_mb)) std::cerr << "demo_01_halfedge: could not cap the memory; running without\n";
 
     try {
-        if (!figures.empty()) return render_figures(figures, width, height);
+        if (!figures.empty()) {
+            gr::check_figure_dir(figures);
+            return render_figures(figures, width, height);
+        }
 
         if (input.empty()) input = geolab::model_path("bunny00") ? "bunny00" : "icosphere";
         Demo d(input, load(input));
@@ -1051,6 +1091,9 @@ int main(int argc, char** argv) {
         return run_window(d, frames, screenshot, keys, zoom);
     } catch (const gr::NoDisplay& e) {
         std::cerr << "demo_01_halfedge: " << e.what() << "\n";
+        return 1;
+    } catch (const std::bad_alloc&) {
+        std::cerr << "demo_01_halfedge: " << gr::memory_limit_message("the demo") << "\n";
         return 1;
     } catch (const std::exception& e) {
         std::cerr << "demo_01_halfedge: " << e.what() << "\n";

@@ -14,6 +14,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <new>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -105,6 +106,8 @@ bool attempt(Issues& issues, const std::string& step, F&& f) {
         const std::string m = missing_function(e.what(), step);
         if (std::find(issues.missing.begin(), issues.missing.end(), m) == issues.missing.end())
             issues.missing.push_back(m);
+    } catch (const std::bad_alloc&) {
+        issues.errors.push_back(gr::memory_limit_message(step));
     } catch (const std::exception& e) {
         issues.errors.push_back(step + " threw: " + e.what());
     }
@@ -859,10 +862,17 @@ int render_figures(const std::string& dir_name, int width, int height) {
 // ---- the window ------------------------------------------------------------------------------------------------------
 
 const char* kKeys =
-    "keys: 1 spherical cells, 2 origin correction, 3 pole holes, 4 Cartesian vs spherical, 5 Cartesian octree | "
-    "+/- level | cells & octree: [ ] move the slice, T meridian / θ-band slice | origin: N or Space next step, "
-    "B step back, A all steps, D δ (1.5/3), M margin (2/4/8) | poles: F fill none/normal/vertical, Z north/south/whole | "
-    "W wireframe, Home re-frame, S screenshot, Esc quit";
+    "Window keys:\n"
+    "  1 2 3 4 5       views: spherical cells, origin correction, pole holes, Cartesian vs spherical, Cartesian octree\n"
+    "  + -             level up / down (2..8)\n"
+    "  [ ]             cells and octree views: move the slice by one finest cell\n"
+    "  T               cells view: meridian slice / θ-band slice\n"
+    "  N or Space, B, A  origin view: next step, step back, all steps\n"
+    "  D, M            origin view: δ 1.5 / 3; margin 2 / 4 / 8\n"
+    "  F, Z            poles view: fill none / normal / vertical; north pole / south pole / whole mesh\n"
+    "  W               wireframe on/off\n"
+    "  Home, S, Esc    re-frame, screenshot (out/screenshots/), quit\n"
+    "  (mouse: left drag orbits, right drag pans, wheel zooms)";
 
 // Applies a key; returns true when the camera should be re-framed.
 bool on_key(Demo& d, int key) {
@@ -906,7 +916,7 @@ std::string short_keys(const Demo& d) {
 }
 
 int run_window(Demo& d, int frames, const std::string& screenshot, const std::string& keys) {
-    gr::Viewer viewer("geolab demo 09: spherical dual contouring", 1280, 960);
+    gr::Viewer viewer("geolab demo 09: spherical dual contouring", 960, 720);
     std::cout << kKeys << "\n";
     auto refresh = [&](bool reframe) {
         Frame fr = draw(d);
@@ -920,7 +930,14 @@ int run_window(Demo& d, int frames, const std::string& screenshot, const std::st
     refresh(true);
     viewer.on_key([&](int key) { refresh(on_key(d, key)); });
     if (frames > 0) {  // scripted: keys, a few frames, a screenshot
-        for (char c : keys) refresh(on_key(d, c == '_' ? ' ' : std::toupper(static_cast<unsigned char>(c))));
+        for (char c : keys) {
+            if (c == 'S' || c == 's') {  // as the window's S key
+                viewer.run_frames(1);
+                std::cout << "wrote " << viewer.save_screenshot().string() << "\n";
+                continue;
+            }
+            refresh(on_key(d, c == '_' ? ' ' : std::toupper(static_cast<unsigned char>(c))));
+        }
         viewer.run_frames(frames);
         if (!screenshot.empty()) {
             viewer.screenshot(screenshot);
@@ -962,14 +979,22 @@ int main(int argc, char** argv) {
     app.add_option("--png", png, "Render the view into this PNG instead of opening a window");
     app.add_option("--figures", figures, "Render the handout's figures into this folder and exit (headless)");
     app.add_option("--size", width, "PNG width (height = 3/4 of it)")->capture_default_str();
+    std::size_t memory_mb = gr::default_demo_memory_mb();
+    app.add_option("--memory-mb", memory_mb, "Address-space cap for your code, MiB (0: none; default: the grader's)")
+        ->capture_default_str();
     app.add_option("--frames", frames, "(testing) draw N frames in the window, then exit")->group("");
     app.add_option("--screenshot", screenshot, "(testing) with --frames: save the window to this PNG")->group("");
     app.add_option("--keys", keys, "(testing) with --frames: press these keys first ('_' = Space)")->group("");
+    app.footer(kKeys);
     CLI11_PARSE(app, argc, argv);
     const int height = width * 3 / 4;
+    if (!gr::limit_demo_memory(memory_mb)) std::cerr << "demo_09_spherical_dc: could not cap the memory; running without\n";
 
     try {
-        if (!figures.empty()) return render_figures(figures, width, height);
+        if (!figures.empty()) {
+            gr::check_figure_dir(figures);
+            return render_figures(figures, width, height);
+        }
         Demo d{load(input.empty() ? "blob" : input)};
         d.level = level;
         const char* views[] = {"", "cells", "origin", "poles", "compare", "octree"};
@@ -992,6 +1017,9 @@ int main(int argc, char** argv) {
                       << views[int(d.view)] << " --png view.png)\n";
             return 1;
         }
+    } catch (const std::bad_alloc&) {
+        std::cerr << "demo_09_spherical_dc: " << gr::memory_limit_message("the demo") << "\n";
+        return 1;
     } catch (const std::exception& e) {
         std::cerr << "demo_09_spherical_dc: " << e.what() << "\n";
         return 1;

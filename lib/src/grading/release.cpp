@@ -8,6 +8,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include <unistd.h>
+
 namespace geolab::grading {
 namespace fs = std::filesystem;
 namespace {
@@ -155,6 +157,29 @@ std::vector<LabDiff> generate_labs(const fs::path& root, bool write) {
     return diffs;
 }
 
+std::vector<fs::path> tracked_files(const fs::path& root) {
+    if (std::system("git --version >/dev/null 2>&1") != 0)
+        throw std::runtime_error("git is not installed: the release copies only the files git tracks in " +
+                                 root.string());
+    // git ls-files -z: every path in the index, NUL-separated (names with spaces or newlines survive).
+    const fs::path list = fs::temp_directory_path() / ("geolab-ls-files-" + std::to_string(::getpid()));
+    const std::string cmd = "git -C '" + root.string() + "' ls-files -z --cached >'" + list.string() + "' 2>/dev/null";
+    const int rc = std::system(cmd.c_str());
+    const std::string text = fs::exists(list) ? read_text(list) : std::string();
+    fs::remove(list);
+    if (rc != 0)
+        throw std::runtime_error(root.string() + " is not a git work tree: the release copies only the files git "
+                                 "tracks (run 'git init && git add' first)");
+    std::vector<fs::path> files;
+    for (std::size_t a = 0; a < text.size();) {
+        const std::size_t b = std::min(text.find('\0', a), text.size());
+        if (b > a) files.emplace_back(text.substr(a, b - a));
+        a = b + 1;
+    }
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
 std::vector<fs::path> make_release(const fs::path& root, const fs::path& out, bool git_init) {
     if (fs::exists(out) && !fs::is_empty(out)) throw std::runtime_error(out.string() + ": exists and is not empty");
     // What never goes to students.
@@ -164,25 +189,46 @@ std::vector<fs::path> make_release(const fs::path& root, const fs::path& out, bo
         if (rel.string().rfind("data/models", 0) == 0) return true;
         // The grader's adversarial suite is the reference with twists: answers, so instructors only.
         if (rel.string().rfind("tests/grading/adversarial", 0) == 0) return true;
+        if (rel == release_readme_template) return true;  // it becomes README.md
         for (const auto& part : rel)
             if (part == "hidden") return true;
         return false;
     };
+    // Only what git tracks: a screenshot, notes or a scratch file lying in the instructor's tree never ships.
+    const std::vector<fs::path> tracked = tracked_files(root);
     std::vector<fs::path> written;
-    for (auto it = fs::recursive_directory_iterator(root); it != fs::recursive_directory_iterator(); ++it) {
-        const fs::path rel = fs::relative(it->path(), root);
-        if (excluded(rel)) {
-            if (it->is_directory()) it.disable_recursion_pending();
-            continue;
-        }
-        if (!it->is_regular_file()) continue;
+    for (const fs::path& rel : tracked) {
+        const fs::path from = root / rel;
+        if (excluded(rel) || !fs::is_regular_file(fs::symlink_status(from))) continue;  // (deleted, symlinks)
         fs::create_directories((out / rel).parent_path());
-        fs::copy_file(it->path(), out / rel, fs::copy_options::overwrite_existing);
+        fs::copy_file(from, out / rel, fs::copy_options::overwrite_existing);
+        fs::permissions(out / rel, fs::status(from).permissions());
         written.push_back(rel);
     }
+    // The student's README replaces the instructor's: a student's two commands, where the handouts are.
+    const fs::path student_readme = root / release_readme_template;
+    if (!fs::is_regular_file(student_readme))
+        throw std::runtime_error(student_readme.string() + ": the student README template is missing");
+    // @HANDOUTS@ becomes a link to every released handout (docs/labs/NN_name.md of a lab labs/NN_name).
+    std::string handouts;
+    for (const auto& rel : written) {
+        const std::string r = rel.generic_string(), stem = rel.stem().string();
+        if (rel.parent_path() == "docs/labs" && rel.extension() == ".md" && fs::is_directory(out / "labs" / stem))
+            handouts += (handouts.empty() ? "" : ", ") + ("[" + r + "](" + r + ")");
+    }
+    std::string readme = read_text(student_readme);
+    if (const auto at = readme.find("@HANDOUTS@"); at != std::string::npos)
+        readme.replace(at, std::string("@HANDOUTS@").size(), handouts.empty() ? "docs/labs/" : handouts);
+    write_text(out / "README.md", readme);
+    if (std::find(written.begin(), written.end(), fs::path("README.md")) == written.end())
+        written.push_back("README.md");
     // labs/ comes from the generator, never from a possibly stale copy.
-    fs::create_directories(out / "solutions");
-    for (const auto& sol : solution_labs(root)) fs::copy(sol, out / "solutions" / sol.filename(), fs::copy_options::recursive);
+    // (From the tracked solution files only: an untracked scratch file in solutions/ makes no stub.)
+    for (const fs::path& rel : tracked)
+        if (rel.begin()->string() == "solutions" && fs::is_regular_file(fs::symlink_status(root / rel))) {
+            fs::create_directories((out / rel).parent_path());
+            fs::copy_file(root / rel, out / rel);
+        }
     generate_labs(out, true);
     fs::remove_all(out / "solutions");
     // Leak scan: no marker and no line that exists only inside a solution block may appear in the release.

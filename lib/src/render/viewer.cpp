@@ -14,7 +14,11 @@
 #include <string>
 #include <utility>
 
+#include <sys/resource.h>
+
 #include "context.hpp"
+#include "geolab/config.hpp"
+#include "geolab/grading/runner.hpp"
 #include "renderer.hpp"
 
 namespace geolab::render {
@@ -31,6 +35,7 @@ bool env_set(const char* name) {
 }
 
 const char* kHeadlessHint = "Run headless instead: pass --png FILE to write the picture to a PNG file.";
+constexpr int kFrameMargin = 16, kTitleMargin = 48;  // screen units kept free around a window that fits the screen
 
 // Initializes GLFW (reference counted). Throws NoDisplay when there is no display.
 void acquire_glfw() {
@@ -119,18 +124,22 @@ struct Viewer::Impl {
         renderer->draw(camera, fw, fh, ww > 0 ? float(fw) / float(ww) : 1.0f);
     }
 
-    void save_screenshot() {
-        std::string name;
-        do {
-            name = "geolab_screenshot_" + std::to_string(++screenshot_count) + ".png";
-        } while (std::filesystem::exists(name));
+    std::filesystem::path save_screenshot() {
+        std::filesystem::path file;
         try {
-            capture().write_png(name);
-            status = "saved " + name;
+            const auto dir = screenshot_dir();
+            std::filesystem::create_directories(dir);
+            do {
+                file = dir / ("geolab_screenshot_" + std::to_string(++screenshot_count) + ".png");
+            } while (std::filesystem::exists(file));
+            capture().write_png(file);
+            status = "saved " + file.string();
         } catch (const std::exception& e) {
-            status = e.what();
+            status = std::string("screenshot not saved: ") + e.what();
+            file.clear();
         }
         update_title();
+        return file;
     }
 
     Image capture() {
@@ -229,6 +238,16 @@ Viewer::Viewer(std::string title, int width, int height) : impl_(std::make_uniqu
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
     glfwWindowHint(GLFW_SAMPLES, 4);
+    // Fit the screen: the primary monitor's work area less a margin for the window's frame and title bar.
+    if (GLFWmonitor* monitor = glfwGetPrimaryMonitor()) {
+        int x = 0, y = 0, aw = 0, ah = 0;
+        glfwGetMonitorWorkarea(monitor, &x, &y, &aw, &ah);
+        if (aw > 0 && ah > 0) {
+            const double k = std::min({1.0, double(aw - kFrameMargin) / width, double(ah - kTitleMargin) / height});
+            width = std::max(64, int(width * k));
+            height = std::max(48, int(height * k));
+        }
+    }
     g_glfw_error.clear();
     GLFWwindow* window = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
     if (!window) {
@@ -329,6 +348,48 @@ void Viewer::run() {
 Image Viewer::capture() { return impl_->capture(); }
 
 void Viewer::screenshot(const std::filesystem::path& file) { capture().write_png(file); }
+
+std::filesystem::path Viewer::save_screenshot() { return impl_->save_screenshot(); }
+
+void Viewer::size(int& width, int& height, int& fb_width, int& fb_height) const {
+    glfwGetWindowSize(impl_->window, &width, &height);
+    glfwGetFramebufferSize(impl_->window, &fb_width, &fb_height);
+}
+
+std::filesystem::path screenshot_dir() { return std::filesystem::path("out") / "screenshots"; }
+
+void check_figure_dir(const std::filesystem::path& dir) {
+    namespace fs = std::filesystem;
+    if (config::has_solutions) return;  // the instructor renders the handouts' figures on purpose
+    std::error_code ec;
+    const fs::path docs = fs::weakly_canonical(fs::path(config::source_dir) / "docs", ec);
+    const fs::path target = fs::weakly_canonical(fs::absolute(dir), ec);
+    const auto rel = target.lexically_relative(docs);
+    if (!ec && !rel.empty() && *rel.begin() != "..")
+        throw std::runtime_error(dir.string() + " is inside docs/, which holds the handouts' figures (the "
+                                 "reference's): write yours elsewhere, e.g. --figures out/figures/NN_name");
+}
+
+std::size_t default_demo_memory_mb() { return grading::RunOptions{}.memory_mb; }
+
+bool limit_demo_memory(std::size_t mb) {
+    if (mb == 0) return true;
+    rlimit r{};
+    if (::getrlimit(RLIMIT_AS, &r) != 0) return false;
+    const rlim_t want = static_cast<rlim_t>(mb) << 20;
+    if (r.rlim_max != RLIM_INFINITY && r.rlim_max < want) return true;  // already capped lower
+    r.rlim_cur = want;
+    return ::setrlimit(RLIMIT_AS, &r) == 0;
+}
+
+std::string memory_limit_message(const std::string& where) {
+    rlimit r{};
+    std::string cap;
+    if (::getrlimit(RLIMIT_AS, &r) == 0 && r.rlim_cur != RLIM_INFINITY)
+        cap = " (" + std::to_string(static_cast<unsigned long long>(r.rlim_cur >> 20)) + " MiB)";
+    return "memory limit" + cap + " exceeded in " + where +
+           ": the grader stops a test at the same cap (a loop that never ends while it allocates?)";
+}
 
 void Viewer::close() { glfwSetWindowShouldClose(impl_->window, GLFW_TRUE); }
 

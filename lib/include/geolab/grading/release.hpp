@@ -26,11 +26,20 @@ struct LabDiff {
 //! compares; returns the differences (empty: labs/ is exactly what the generator makes).
 std::vector<LabDiff> generate_labs(const std::filesystem::path& root, bool write);
 
-//! Write the student release of the course tree `root` into `out` (which must not exist or be empty): no
-//! solutions/, no hidden tests, no adversarial grader cases, no build or model folders, labs/ regenerated; then
-//! scan every file for leaks (a marker, or any line that exists only inside a solution block). With `git_init`
-//! and git available, `out` becomes a fresh repository with one commit (no history to leak answers from).
-//! \return the files written. \throw std::runtime_error on a leak (file:line named) or I/O error.
+//! The student release's README.md, relative to the course tree: it replaces the instructor's README.md.
+inline constexpr const char* release_readme_template = "tools/release/README.md";
+
+//! The files git tracks in the work tree `root` (`git ls-files`), relative to it, sorted.
+//! \throw std::runtime_error when git is missing or `root` is not a git work tree.
+std::vector<std::filesystem::path> tracked_files(const std::filesystem::path& root);
+
+//! Write the student release of the course tree `root` into `out` (which must not exist or be empty). It copies
+//! only the files git tracks (an untracked screenshot or notes file never ships), minus solutions/, hidden tests,
+//! the adversarial grader cases, build and model folders; README.md comes from release_readme_template; labs/ is
+//! regenerated. Then every file is scanned for leaks (a marker, or any line that exists only inside a solution
+//! block). With `git_init`, `out` becomes a fresh repository with one commit (no history to leak answers from).
+//! \return the files written. \throw std::runtime_error on a leak (file:line named), when `root` is not a git
+//! work tree, or on an I/O error.
 std::vector<std::filesystem::path> make_release(const std::filesystem::path& root, const std::filesystem::path& out,
                                                 bool git_init = true);
 

@@ -4,9 +4,14 @@
 //!
 //! Mouse: left drag orbits, right drag (or shift + left drag) pans, scroll zooms; a left click without drag
 //! calls the pick callback with the world-space ray under the cursor. Keys: Esc closes, S saves a screenshot
-//! (geolab_screenshot_N.png in the working directory), Home re-frames the scene; every other key goes to the
-//! key callback. An exception thrown by a callback closes the window and is rethrown by run() / run_frames().
-//! Without a display the constructor throws NoDisplay; programs catch it and suggest `--png FILE`.
+//! (out/screenshots/geolab_screenshot_N.png under the working directory), Home re-frames the scene; every other
+//! key goes to the key callback. An exception thrown by a callback closes the window and is rethrown by run() /
+//! run_frames(). Without a display the constructor throws NoDisplay; programs catch it and suggest `--png FILE`.
+//! The window never opens larger than the screen's work area (it shrinks, keeping its aspect ratio).
+//!
+//! Demos run student code: limit_demo_memory() gives them the grader's memory cap, memory_limit_message() the
+//! sentence to show when an allocation fails under it.
+#include <cstddef>
 #include <filesystem>
 #include <functional>
 #include <memory>
@@ -29,11 +34,29 @@ public:
 //! True when a display is configured and GLFW can connect to it (a window can probably be opened).
 bool display_available();
 
+//! The memory cap of a demo process, MiB: the grader's default cap per test (grading::RunOptions::memory_mb).
+std::size_t default_demo_memory_mb();
+//! Caps this process's address space (RLIMIT_AS) at `mb` MiB (0: no cap), so that student code that runs away
+//! in a demo fails as it does when graded (std::bad_alloc), not by swapping the machine. \return false when the
+//! system refused the limit (the demo then runs uncapped).
+bool limit_demo_memory(std::size_t mb);
+//! "memory limit (N MiB) exceeded in WHERE: ...": the sentence for a std::bad_alloc under limit_demo_memory().
+std::string memory_limit_message(const std::string& where);
+
+//! The folder the S key writes screenshots into: out/screenshots under the working directory.
+std::filesystem::path screenshot_dir();
+
+//! Checks a demo's --figures folder. In the student release (a build without solutions/) the handouts' figures
+//! under docs/ are the reference's and must stay: a folder inside the course tree's docs/ is refused.
+//! \throw std::runtime_error naming the folder and pointing to out/figures/.
+void check_figure_dir(const std::filesystem::path& dir);
+
 //! A window showing a Scene with an orbit camera. One Viewer at a time per thread; all calls from the thread
 //! that created it.
 class Viewer {
 public:
-    //! Opens the window (width × height screen units). \throw NoDisplay when no window can be opened.
+    //! Opens the window (width × height screen units, shrunk to fit the screen's work area with room for the
+    //! title bar). \throw NoDisplay when no window can be opened.
     explicit Viewer(std::string title, int width = 1024, int height = 768);
     ~Viewer();
     Viewer(const Viewer&) = delete;
@@ -66,6 +89,11 @@ public:
     Image capture();
     //! capture() written as PNG. \throw geolab::IoError if the file cannot be written.
     void screenshot(const std::filesystem::path& file);
+    //! What the S key does: capture() into screenshot_dir()/geolab_screenshot_N.png (the first free N), and
+    //! says so in the status line. \return the file written (empty if it could not be written).
+    std::filesystem::path save_screenshot();
+    //! The window's size in screen units (after fitting the screen) and its framebuffer's size in pixels.
+    void size(int& width, int& height, int& fb_width, int& fb_height) const;
     //! Asks the window to close; run() returns after the current frame.
     void close();
 
