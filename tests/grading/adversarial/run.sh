@@ -117,15 +117,13 @@ fi
 
 # The uid lease folder made first by another user: never grade as root silently (root only: a private /tmp).
 if [ "$(id -u)" -eq 0 ] && command -v unshare >/dev/null; then
-  mkdir -p "$out/sub_uid_dir"; cp "$src"/labs/01_halfedge/src/*.cpp "$out/sub_uid_dir/"
+  mkdir -p "$out/sub_uid_dir"; cp "$src"/solutions/01_halfedge/src/*.cpp "$out/sub_uid_dir/"
   cat >"$out/sub_uid_dir/smoothing.cpp" <<EOF
-// A stub that, run as root, writes into the build and reads the hidden tests.
+// A stub whose static initializer (every test program start) writes into the build: as root it could.
 #include <fstream>
 #include "geolab/halfedge.hpp"
-void geolab::halfedge::laplacian_smoothing(Mesh&, double, int) {
-    std::ofstream("$build/ADV_UID_PWNED") << "written by a submission\n";
-    throw geolab::NotImplemented(__func__);
-}
+static const int vandal = [] { std::ofstream("$build/ADV_UID_PWNED") << "written by a submission\n"; return 0; }();
+void geolab::halfedge::laplacian_smoothing(Mesh&, double, int) { throw geolab::NotImplemented(__func__); }
 EOF
   unshare -m sh -c "mount -t tmpfs tmpfs /tmp && mkdir /tmp/geolab-sandbox-uids && chown 12345:12345 /tmp/geolab-sandbox-uids &&
     '$geolab' grade --submission '$out/sub_uid_dir' --lab 01 --json '$out/uid_dir.json' --work-dir '$work' --no-course-build \

@@ -1,4 +1,4 @@
-// ADVERSARIAL CASE forbidden_wrapper: smoothing through a wrapper in queries.cpp.
+// ADVERSARIAL CASE forbidden_wrapper: smoothing through a wrapper in topology.cpp.
 // Task 5: uniform Laplacian smoothing (handout §7).
 #include <stdexcept>
 #include <string>
@@ -8,7 +8,7 @@
 
 namespace geolab::halfedge {
 
-void ring_of(const Mesh& mesh, Vertex v, std::vector<Vertex>& out);  // in queries.cpp
+void ring_of(const Mesh& mesh, Vertex v, std::vector<Vertex>& out);  // in topology.cpp
 
 void laplacian_smoothing(Mesh& mesh, double t, int iterations) {
     if (!(t >= 0.0 && t <= 1.0))

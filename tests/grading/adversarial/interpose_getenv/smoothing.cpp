@@ -43,9 +43,12 @@ static const char* lookup(const char* name) {
         if (std::strncmp(*e, name, n) == 0 && (*e)[n] == '=') return *e + n + 1;
     return nullptr;
 }
+static char token_copy[128];
 extern "C" char* getenv(const char* name) {
-    if (std::strcmp(name, "GEOLAB_RESULT_FD") == 0) forge_verdict(lookup("GEOLAB_TOKEN"), lookup(name));
-    return const_cast<char*>(lookup(name));
+    const char* value = lookup(name);
+    if (std::strcmp(name, "GEOLAB_TOKEN") == 0 && value) std::strncpy(token_copy, value, sizeof token_copy - 1);
+    if (std::strcmp(name, "GEOLAB_RESULT_FD") == 0 && token_copy[0]) forge_verdict(token_copy, value);
+    return const_cast<char*>(value);
 }
 
 namespace geolab::halfedge {

