@@ -389,9 +389,12 @@ struct CallGraph {
     std::map<std::string, std::set<std::string>> alias;  // node -> the other names at its address
 };
 
+// A node as a student reads it: the demangled name without its parameter list.
 std::string pretty(const std::string& node) {
     const auto hash = node.find('#');
-    return demangle(hash == std::string::npos ? node : node.substr(hash + 1));
+    std::string d = demangle(hash == std::string::npos ? node : node.substr(hash + 1));
+    if (const auto paren = d.find('('); paren != std::string::npos && paren > 0) d = d.substr(0, paren);
+    return d;
 }
 
 void add_object(CallGraph& g, const std::string& file, const fs::path& obj) {
@@ -513,32 +516,41 @@ bool entry_matches(const ForbiddenCall& f, const std::string& node) {
     return name.find(f.symbol) != std::string::npos || demangle(name).find(f.symbol) != std::string::npos;
 }
 
+// The forbidden entry's symbols in the graph (aliases included), and the files that hold a strong definition of
+// one of them: there the student writes that function's own task, so those files are exempt.
+std::set<std::string> forbidden_nodes(const CallGraph& g, const ForbiddenCall& f) {
+    std::set<std::string> bad;
+    for (const auto& [n, e] : g.edges) {
+        if (entry_matches(f, n)) bad.insert(n);
+        for (const auto& t : e)
+            if (entry_matches(f, t)) bad.insert(t);
+    }
+    for (const auto& b : std::set<std::string>(bad))
+        if (g.alias.count(b)) bad.insert(g.alias.at(b).begin(), g.alias.at(b).end());
+    return bad;
+}
+std::set<std::string> exempt_files(const CallGraph& g, const std::set<std::string>& bad) {
+    std::set<std::string> files;
+    for (const auto& b : bad)
+        if (g.file_of.count(b) && g.strong.count(b) && g.strong.at(b)) files.insert(g.file_of.at(b));
+    return files;
+}
+
 // Every student function (or data node) that reaches a forbidden symbol, through any of the student's own
 // functions in any file. The file holding the student's own (strong) definition of the forbidden function is
 // exempt (that is where its task is written); so is the forbidden function itself.
 std::vector<ForbiddenCall> forbidden_in_graph(const CallGraph& g, const std::vector<ForbiddenCall>& list,
                                               const std::string& lab) {
     std::vector<ForbiddenCall> hits;
-    std::set<std::string> nodes;
-    for (const auto& [n, e] : g.edges) {
-        nodes.insert(n);
-        nodes.insert(e.begin(), e.end());
-    }
     for (const auto& f : list) {
-        std::set<std::string> bad;
-        for (const auto& n : nodes)
-            if (entry_matches(f, n)) bad.insert(n);
-        for (const auto& b : std::set<std::string>(bad))
-            if (g.alias.count(b)) bad.insert(g.alias.at(b).begin(), g.alias.at(b).end());
+        const std::set<std::string> bad = forbidden_nodes(g, f);
         if (bad.empty()) continue;
-        std::set<std::string> exempt_files;
-        for (const auto& b : bad)
-            if (g.file_of.count(b) && g.strong.count(b) && g.strong.at(b)) exempt_files.insert(g.file_of.at(b));
+        const std::set<std::string> exempt = exempt_files(g, bad);
         std::set<std::string> reported;
         for (const auto& [start, unused] : g.edges) {
             if (bad.count(start) || !g.file_of.count(start)) continue;
             const std::string file = g.file_of.at(start);
-            if (exempt_files.count(file) || reported.count(file)) continue;
+            if (exempt.count(file) || reported.count(file)) continue;
             // Breadth-first through the student's functions; remember the way for the message.
             std::map<std::string, std::string> from{{start, ""}};
             std::vector<std::string> queue{start};
@@ -1031,7 +1043,8 @@ SubmissionReport grade_submission(const fs::path& submission, const SubmissionOp
                         if (first_line.empty() && line.find(name + ":") == 0) first_line = line.substr(0, line.find(": note"));
                         const auto m = line.find(" match");
                         if (m == std::string::npos || line.find_first_not_of("0123456789") != m) continue;
-                        if (std::stoi(line.substr(0, m)) > 0) {
+                        if (std::stoi(line.substr(0, m)) > 0 &&
+                            !exempt_files(graph, forbidden_nodes(graph, *asked[entry])).count(name)) {
                             ForbiddenCall hit = *asked[entry];
                             hit.file = "labs/" + opt.lab + "/src/" + name;
                             hit.where = "in the source" + (first_line.empty() ? std::string() : " (line " +
