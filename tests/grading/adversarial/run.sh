@@ -18,9 +18,9 @@
 set -uo pipefail
 geolab=$1; src=$2; build=$3
 here=$(cd "$(dirname "$0")" && pwd)
-out=$build/adversarial
+out=${ADVERSARIAL_OUT:-$build/adversarial}  # ADVERSARIAL_OUT: elsewhere (a non-root run, which cannot write the build)
 rm -rf "$out"; mkdir -p "$out"
-work=$build/adversarial-work  # kept between runs: its object cache makes re-runs faster
+work=$out-work  # kept between runs: its object cache makes re-runs faster
 fails=0
 fail() { echo "FAIL: $*"; fails=$((fails + 1)); }
 score_of() { grep -m1 '^  "score"' "$1" | sed 's/[^0-9.]//g'; }
