@@ -781,7 +781,6 @@ SubmissionReport grade_submission(const fs::path& submission, const SubmissionOp
         sb.workdir = work / "tmp";
         sb.allow_list = true;
         sb.clean_env = true;
-        if (const char* dir = std::getenv("GEOLAB_SANDBOX_UID_DIR"); dir && *dir) sb.uid_dir = dir;  // tests only
         const std::string problem = isolation_problem(sb);
         if (problem.empty()) {
             sb.require_isolation = true;
