@@ -3,6 +3,9 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <set>
+
+#include <unistd.h>
 
 #include <nlohmann/json.hpp>
 
@@ -138,4 +141,120 @@ TEST_CASE("the generator strips solution blocks and rejects bad markers") {
     CHECK_THROWS_AS(strip_solutions("x\n// END SOLUTION\n", "e.cpp"), std::runtime_error);
     CHECK_THROWS_AS(strip_solutions("// BEGIN SOLUTION: f\n// END SOLUTION\n", "f.cpp"), std::runtime_error);
     CHECK_THROWS_AS(strip_solutions("// BEGIN SOLUTIONS\n", "g.cpp"), std::runtime_error);
+}
+
+TEST_CASE("reports replace bytes that are not UTF-8, so results.json stays valid") {
+    using geolab::grading::valid_utf8;
+    const std::string ffd = "\xef\xbf\xbd";
+    CHECK(valid_utf8("plain ascii") == "plain ascii");
+    CHECK(valid_utf8("caf\xc3\xa9 \xe2\x82\xac \xf0\x9f\x99\x82") == "caf\xc3\xa9 \xe2\x82\xac \xf0\x9f\x99\x82");
+    CHECK(valid_utf8("a\xff" "b") == "a" + ffd + "b");                  // a stray byte
+    CHECK(valid_utf8("\xc3") == ffd);                                   // a sequence cut at the end
+    CHECK(valid_utf8("\xc0\xaf") == ffd + ffd);                         // an overlong '/'
+    CHECK(valid_utf8("\xed\xa0\x80") == ffd + ffd + ffd);               // a UTF-16 surrogate
+    CHECK(valid_utf8("\xf4\x90\x80\x80") == ffd + ffd + ffd + ffd);     // above U+10FFFF
+    // A whole report with a stray byte in a test's output and name: written, parsed, the byte replaced.
+    geolab::grading::LabReport lab;
+    lab.lab = "utf8";
+    lab.variant = "student";
+    geolab::grading::TestResult r;
+    r.info.name = "prints \xff";
+    r.info.points = 1;
+    r.status = Status::failed;
+    r.messages = {"bad \xfe byte"};
+    r.output = "output \xff\xfe end";
+    lab.results.push_back(r);
+    const auto path = std::filesystem::temp_directory_path() / "geolab_grader_test_utf8.json";
+    geolab::grading::write_gradescope_json(path, {lab}, "preamble \xff\n");
+    std::ifstream f(path);
+    const auto j = nlohmann::json::parse(f);  // throws on invalid UTF-8 or an empty file
+    REQUIRE(j["tests"].size() == 1);
+    CHECK(j["tests"][0]["output"].get<std::string>().find("output " + ffd + ffd + " end") != std::string::npos);
+    CHECK(j["tests"][0]["name"] == "prints " + ffd);
+    const auto junit = std::filesystem::temp_directory_path() / "geolab_grader_test_utf8.xml";
+    geolab::grading::write_junit(junit, {lab});
+    std::ifstream x(junit);
+    const std::string xml((std::istreambuf_iterator<char>(x)), {});
+    CHECK(xml.find('\xff') == std::string::npos);
+    CHECK(xml.find("bad " + ffd + " byte") != std::string::npos);
+}
+
+TEST_CASE("given files are listed in labs/NN/given.txt, and the generator keeps the list honest") {
+    namespace fs = std::filesystem;
+    const fs::path root = fs::temp_directory_path() / "geolab_grader_test_given";
+    fs::remove_all(root);
+    fs::create_directories(root / "solutions/01_x/src");
+    fs::create_directories(root / "labs/01_x/src");
+    auto write = [](const fs::path& p, const std::string& text) { std::ofstream(p) << text; };
+    write(root / "solutions/01_x/src/task.cpp", "int f() {\n    // BEGIN SOLUTION\n    return 1;\n    // END SOLUTION\n}\n");
+    write(root / "solutions/01_x/src/given.cpp", "int g() { return 2; }\n");
+    // Not listed: the generator says so.
+    auto diffs = geolab::grading::generate_labs(root, true);
+    bool unlisted = false;
+    for (const auto& d : diffs) unlisted |= d.reason.find("not listed") != std::string::npos && d.file.filename() == "given.cpp";
+    CHECK(unlisted);
+    // Listed: clean; the grader's list has it.
+    write(root / "labs/01_x/given.txt", "# given code\ngiven.cpp\n");
+    CHECK(geolab::grading::generate_labs(root, false).empty());
+    CHECK(geolab::grading::given_files(root / "labs/01_x") == std::set<std::string>{"given.cpp"});
+    // A task file marked given is an error, and so is a listed file that does not exist or a path.
+    write(root / "labs/01_x/given.txt", "given.cpp\ntask.cpp\nmissing.cpp\n");
+    diffs = geolab::grading::generate_labs(root, false);
+    CHECK(diffs.size() == 2);
+    write(root / "labs/01_x/given.txt", "src/given.cpp\n");
+    CHECK_THROWS_AS(geolab::grading::given_files(root / "labs/01_x"), std::runtime_error);
+    fs::remove_all(root);
+}
+
+TEST_CASE("the sandbox shows only its allow-list, a private /tmp, a clean environment, and fails closed (root only)") {
+    namespace fs = std::filesystem;
+    using namespace geolab::grading;
+    if (!can_drop_privileges()) {
+        MESSAGE("not root: the sandbox's uid and file system need root (the report then says NOT ISOLATED)");
+        return;
+    }
+    const fs::path base = fs::temp_directory_path() / "geolab_grader_test_sandbox";
+    fs::remove_all(base);
+    fs::create_directories(base / "shown");
+    fs::create_directories(base / "secret");
+    std::ofstream(base / "shown/a.txt") << "shown file\n";
+    std::ofstream(base / "secret/b.txt") << "secret\n";
+    std::ofstream(fs::temp_directory_path() / "geolab_grader_test_marker") << "left by someone else\n";
+    ::setenv("GEOLAB_GRADER_TEST_CANARY", "the grader's environment", 1);
+    RunOptions o;
+    o.memory_mb = 0;
+    o.sandbox.drop_privileges = true;
+    o.sandbox.allow_list = true;
+    o.sandbox.clean_env = true;
+    o.sandbox.require_isolation = true;
+    o.sandbox.workdir = base / "work";
+    o.sandbox.visible = {base / "shown"};
+    REQUIRE(isolation_problem(o.sandbox) == "");
+    const std::string b = base.string();
+    const std::string script =
+        "cat " + b + "/shown/a.txt; test -e " + b + "/secret/b.txt && echo SEES_SECRET; test -e /tmp/geolab_grader_test_marker && "
+        "echo SEES_HOST_TMP; test -e /root && echo SEES_ROOT_HOME; env | grep -q GEOLAB_GRADER_TEST_CANARY && echo SEES_ENV; "
+        "echo uid=$(id -u); touch /tmp/x && echo TMP_WRITABLE; touch " + b + "/shown/c 2>/dev/null && echo SHOWN_WRITABLE; "
+        "touch ./w && echo WORK_WRITABLE";
+    CommandResult r = run_command({"/bin/sh", "-c", script}, 30, o);
+    CAPTURE(r.output);
+    CHECK(r.output.find("shown file") != std::string::npos);
+    CHECK(r.output.find("SEES_") == std::string::npos);
+    CHECK(r.output.find("uid=0") == std::string::npos);
+    CHECK(r.output.find("TMP_WRITABLE") != std::string::npos);
+    CHECK(r.output.find("WORK_WRITABLE") != std::string::npos);
+    CHECK(r.output.find("SHOWN_WRITABLE") == std::string::npos);
+    // Each run gets an empty /tmp: what one left, the next does not see.
+    CommandResult second = run_command({"/bin/sh", "-c", "test -e /tmp/x && echo SEES_LAST_TMP; echo done"}, 30, o);
+    CHECK(second.output.find("SEES_LAST_TMP") == std::string::npos);
+    // The lease folder made by another user: no uid, and with require_isolation nothing runs (never as root).
+    o.sandbox.uid_dir = base / "uids";
+    fs::create_directories(o.sandbox.uid_dir);
+    REQUIRE(::chown(o.sandbox.uid_dir.c_str(), 12345, 12345) == 0);
+    CHECK(isolation_problem(o.sandbox).find("owned by uid 12345") != std::string::npos);
+    CHECK_THROWS_AS(run_command({"/bin/sh", "-c", "touch " + b + "/ran_as_root"}, 30, o), SandboxError);
+    CHECK(!fs::exists(base / "ran_as_root"));
+    fs::remove_all(base);
+    fs::remove(fs::temp_directory_path() / "geolab_grader_test_marker");
+    ::unsetenv("GEOLAB_GRADER_TEST_CANARY");
 }

@@ -23,7 +23,8 @@ struct GradeArgs {
     bool student_view = false;
     bool quiet = false;
     std::string submission, lab, work_dir, forbidden, figures;
-    bool asan = false, no_course_build = false;
+    bool asan = false, no_course_build = false, allow_unisolated = false;
+    double max_seconds = 1200;
 };
 
 // CI's honesty checks: the reference scores 100%; untouched stubs score 0 and every graded test fails cleanly.
@@ -66,6 +67,8 @@ int run_submission(const GradeArgs& a) {
     opt.asan = a.asan;
     opt.build_course = !a.no_course_build;
     opt.forbidden = a.forbidden;
+    opt.max_seconds = a.max_seconds;
+    opt.allow_unisolated = a.allow_unisolated;
     if (!a.figures.empty()) opt.run.figure_dir = std::filesystem::absolute(a.figures);
     opt.run.timeout_s = a.timeout;
     opt.run.memory_mb = a.memory_mb;
@@ -178,6 +181,11 @@ void add_grade(CLI::App& app, int& status) {
     cmd->add_option("--work-dir", a->work_dir, "With --submission: the grading work folder (default: BUILD/grading)");
     cmd->add_option("--forbidden", a->forbidden, "With --submission: the forbidden-calls list (default labs/NN/forbidden.txt)");
     cmd->add_option("--figures", a->figures, "With --submission: write the tests' pictures (attach_mesh_figure) here");
+    cmd->add_option("--max-seconds", a->max_seconds,
+                    "With --submission: wall-clock cap of the whole submission, seconds (0: none)")
+        ->capture_default_str();
+    cmd->add_flag("--allow-unisolated", a->allow_unisolated,
+                  "With --submission, as root: grade even when the sandbox cannot be set up (the report says NOT ISOLATED)");
     cmd->add_flag("--no-course-build", a->no_course_build,
                   "With --submission: do not bring the course's test program up to date first");
     cmd->add_option("--expect", a->expect, "CI check: 'full' (every graded test passes) or 'zero' (every graded test "

@@ -109,7 +109,8 @@ void add_grade_all(CLI::App& app, int& status) {
         int jobs = 1;
         double timeout = 20;
         std::size_t memory_mb = 4096;
-        bool asan = false, no_course_build = false, regrade = false;
+        bool asan = false, no_course_build = false, regrade = false, allow_unisolated = false;
+        double max_seconds = 1200;
     };
     auto a = std::make_shared<Args>();
     auto* cmd = app.add_subcommand("grade-all", "Grade a folder of submissions (one sub-folder or zip per student) into a CSV");
@@ -123,6 +124,10 @@ void add_grade_all(CLI::App& app, int& status) {
     cmd->add_option("--memory-mb", a->memory_mb, "Address-space limit per test, MiB")->capture_default_str();
     cmd->add_flag("--asan", a->asan, "Also run each submission with AddressSanitizer + UBSan (ungraded)");
     cmd->add_flag("--no-course-build", a->no_course_build, "Do not bring the course's test program up to date first");
+    cmd->add_option("--max-seconds", a->max_seconds, "Wall-clock cap per submission, seconds (0: none)")
+        ->capture_default_str();
+    cmd->add_flag("--allow-unisolated", a->allow_unisolated,
+                  "As root: grade even when the sandbox cannot be set up (each report says NOT ISOLATED)");
     cmd->add_flag("--regrade", a->regrade, "Grade every student again, even those with complete results");
     cmd->callback([a, &status] {
         const std::string lab = resolve_lab(a->lab);
@@ -190,6 +195,8 @@ void add_grade_all(CLI::App& app, int& status) {
                     opt.run.timeout_s = a->timeout;
                     opt.run.memory_mb = a->memory_mb;
                     opt.run.jobs = test_jobs;
+                    opt.max_seconds = a->max_seconds;
+                    opt.allow_unisolated = a->allow_unisolated;
                     const auto rep = grading::grade_submission(s.submission, opt);
                     write_submission_reports(rep, (dir / "results.json").string(), (dir / "junit.xml").string());
                     std::ofstream log(dir / "log.txt");

@@ -24,7 +24,7 @@ namespace {
 // autograder builds only geolab and the lab's test program.
 constexpr const char* kPackages =
     "build-essential cmake ninja-build pkg-config git unzip zip libglm-dev libglfw3-dev libosmesa6-dev libgl-dev "
-    "doctest-dev libstb-dev nlohmann-json3-dev libcli11-dev";
+    "doctest-dev libstb-dev nlohmann-json3-dev libcli11-dev libeigen3-dev clang-tools";
 
 // The shell test that every model file the tests load is in data/models/ (under "$1"); prints the missing ones.
 std::string missing_models_check(const std::vector<std::string>& models) {
@@ -91,7 +91,8 @@ fi
 work=$(mktemp -d)
 chmod 711 "$work"  # the tests run as their own uid: they must reach their program (never list the folder)
 cp -r "$root/submission" "$work/submission"
-"$geolab" grade --submission "$work/submission" --lab )" + lab + R"( --no-course-build \
+# --max-seconds: the whole submission ends (with a results.json) well before Gradescope's own time limit.
+"$geolab" grade --submission "$work/submission" --lab )" + lab + R"( --no-course-build --max-seconds 540 \
   --json "$root/results/results.json" --junit "$root/results/junit.xml" --work-dir "$work/grading"
 status=$?
 rm -rf "$work"

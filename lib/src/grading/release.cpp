@@ -128,16 +128,47 @@ std::string strip_solutions(const std::string& text, const std::string& name) {
     return out.str();
 }
 
+std::set<std::string> given_files(const fs::path& lab_dir) {
+    std::set<std::string> given;
+    const fs::path list = lab_dir / "given.txt";
+    if (!fs::exists(list)) return given;
+    std::istringstream in(read_text(list));
+    std::string line;
+    for (int n = 1; std::getline(in, line); ++n) {
+        const std::string t = trim(line);
+        if (t.empty() || t[0] == '#') continue;
+        if (t.find('/') != std::string::npos || fs::path(t).extension() != ".cpp")
+            throw std::runtime_error(list.string() + ":" + std::to_string(n) + ": '" + t +
+                                     "' is not the name of a src/*.cpp file (one basename per line)");
+        given.insert(t);
+    }
+    return given;
+}
+
 std::vector<LabDiff> generate_labs(const fs::path& root, bool write) {
     std::vector<LabDiff> diffs;
     for (const auto& sol : solution_labs(root)) {
         const fs::path lab_src = root / "labs" / sol.filename() / "src";
+        const auto given = given_files(root / "labs" / sol.filename());
+        for (const auto& g : given)
+            if (!fs::is_regular_file(sol / "src" / g))
+                diffs.push_back({fs::relative(root / "labs" / sol.filename() / "given.txt", root),
+                                 "lists " + g + ", which solutions/" + sol.filename().string() + "/src does not have"});
         std::set<fs::path> expected;
         for (const auto& e : fs::directory_iterator(sol / "src")) {
             if (!e.is_regular_file()) continue;
             const fs::path rel = fs::relative(lab_src / e.path().filename(), root);
             expected.insert(e.path().filename());
-            std::string want = strip_solutions(read_text(e.path()), fs::relative(e.path(), root).string());
+            const std::string text = read_text(e.path());
+            // Given or not is said once, in given.txt; a file without a solution block is given code.
+            const bool has_block = text.find(begin_marker) != std::string::npos;
+            const std::string base = e.path().filename().string();
+            if (given.count(base) && has_block)
+                diffs.push_back({rel, "listed in given.txt but has a solution block (given code is never a task)"});
+            if (!given.count(base) && !has_block && e.path().extension() == ".cpp")
+                diffs.push_back({rel, "has no solution block but is not listed in labs/" + sol.filename().string() +
+                                          "/given.txt (given code must be marked so that the grader takes the course's copy)"});
+            std::string want = strip_solutions(text, fs::relative(e.path(), root).string());
             const fs::path target = lab_src / e.path().filename();
             if (!fs::exists(target)) {
                 diffs.push_back({rel, "missing"});

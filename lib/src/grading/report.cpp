@@ -40,7 +40,8 @@ std::string test_output(const TestResult& r, bool with_output) {
     return os.str();
 }
 
-std::string xml_escape(const std::string& s) {
+std::string xml_escape(const std::string& text) {
+    const std::string s = valid_utf8(text);
     std::string o;
     for (unsigned char c : s) {
         switch (c) {
@@ -49,7 +50,7 @@ std::string xml_escape(const std::string& s) {
             case '>': o += "&gt;"; break;
             case '"': o += "&quot;"; break;
             default:
-                if (c < 0x20 && c != '\n' && c != '\t') o += ' ';
+                if ((c < 0x20 && c != '\n' && c != '\t') || c == 0x7f) o += ' ';
                 else o += static_cast<char>(c);
         }
     }
@@ -57,6 +58,34 @@ std::string xml_escape(const std::string& s) {
 }
 
 }  // namespace
+
+std::string valid_utf8(const std::string& s) {
+    std::string o;
+    o.reserve(s.size());
+    const auto* p = reinterpret_cast<const unsigned char*>(s.data());
+    const std::size_t n = s.size();
+    for (std::size_t i = 0; i < n;) {
+        const unsigned char c = p[i];
+        std::size_t len = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xe ? 3 : (c >> 3) == 0x1e ? 4 : 0;
+        bool ok = len > 0 && i + len <= n;
+        for (std::size_t k = 1; ok && k < len; ++k) ok = (p[i + k] & 0xc0) == 0x80;
+        if (ok && len > 1) {
+            // No overlong forms, no surrogates, nothing above U+10FFFF.
+            unsigned cp = c & (0x7f >> len);
+            for (std::size_t k = 1; k < len; ++k) cp = (cp << 6) | (p[i + k] & 0x3f);
+            ok = (len == 2 && cp >= 0x80) || (len == 3 && cp >= 0x800 && (cp < 0xd800 || cp > 0xdfff)) ||
+                 (len == 4 && cp >= 0x10000 && cp <= 0x10ffff);
+        }
+        if (ok) {
+            o.append(s, i, len);
+            i += len;
+        } else {
+            o += "\xef\xbf\xbd";
+            ++i;
+        }
+    }
+    return o;
+}
 
 std::string first_message(const TestResult& r, std::size_t max_chars) {
     if (r.messages.empty()) return "";
@@ -132,12 +161,12 @@ void write_gradescope_json(const std::filesystem::path& file, const std::vector<
             max_score += r.info.points;
             nlohmann::json tags = {lab.lab, to_string(r.status)};
             if (!r.info.suite.empty()) tags.push_back(r.info.suite);
-            tests.push_back({{"name", r.info.name},
+            tests.push_back({{"name", valid_utf8(r.info.name)},
                              {"number", number_of(l, t)},
                              {"score", r.score},
                              {"max_score", r.info.points},
                              {"status", r.status == Status::passed ? "passed" : "failed"},
-                             {"output", test_output(r, true)},
+                             {"output", valid_utf8(test_output(r, true))},
                              {"tags", tags},
                              {"visibility", r.info.hidden ? "after_published" : "visible"}});
         }
@@ -146,12 +175,13 @@ void write_gradescope_json(const std::filesystem::path& file, const std::vector<
     nlohmann::json j = {{"score", score},
                         {"max_score", max_score},
                         {"execution_time", seconds},
-                        {"output", summary.str()},
+                        {"output", valid_utf8(summary.str())},
                         {"visibility", "visible"},
                         {"stdout_visibility", "hidden"},
                         {"tests", tests}};
     std::ofstream f(file);
-    f << j.dump(2) << "\n";
+    // Every string is valid UTF-8 already; `replace` is the last guard (a tag, a suite name).
+    f << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
     if (!f) throw std::runtime_error(file.string() + ": cannot write the results file");
 }
 

@@ -69,6 +69,7 @@ struct ChildOutcome {
     std::string output;   // stdout + stderr, up to the cap
     std::string verdict;  // everything written to the verdict pipe
     bool timed_out = false, flooded = false, exited = false, started = true;
+    std::string sandbox_error;  // the sandbox could not be set up in the child (then the program never ran)
     int exit_code = 0, signal = 0;
     double seconds = 0;
 };
@@ -120,27 +121,217 @@ struct UidLease {
     }
 };
 
-bool lease_uid(const Sandbox& sb, UidLease& lease) {
-    const char* dir = "/tmp/geolab-sandbox-uids";
-    ::mkdir(dir, 0755);
+// Lease a uid; returns why not (empty: leased). The lease folder must be root's and writable by root only: a
+// folder another user made first could hold lock files that user controls (fail closed, never run as root).
+std::string lease_uid(const Sandbox& sb, UidLease& lease) {
+    const std::string dir = sb.uid_dir.string();
+    ::mkdir(dir.c_str(), 0755);
     struct stat st {};
-    if (::lstat(dir, &st) != 0 || !S_ISDIR(st.st_mode) || st.st_uid != 0 || (st.st_mode & 022)) return false;
+    if (::lstat(dir.c_str(), &st) != 0) return dir + " cannot be made (" + std::strerror(errno) + ")";
+    if (!S_ISDIR(st.st_mode)) return dir + " is not a folder (a symbolic link or a file put there by someone?)";
+    if (st.st_uid != 0)
+        return dir + " is owned by uid " + std::to_string(st.st_uid) +
+               ", not root: another user made it first; remove it (rm -rf " + dir + ") and grade again";
+    if (st.st_mode & 022) return dir + " is writable by group or others; remove it (rm -rf " + dir + ") and grade again";
     static std::atomic<unsigned> start{0};
     const unsigned first = start++ % std::max(1u, sb.uid_pool_size);
     for (unsigned k = 0; k < sb.uid_pool_size; ++k) {
         const unsigned uid = sb.uid_pool_first + (first + k) % sb.uid_pool_size;
         if (::getpwuid(uid) != nullptr) continue;  // a real account: never borrow it
-        const std::string path = std::string(dir) + "/" + std::to_string(uid);
+        const std::string path = dir + "/" + std::to_string(uid);
         int fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0600);
         if (fd < 0) continue;
+        struct stat fst {};
+        if (::fstat(fd, &fst) != 0 || fst.st_uid != 0 || !S_ISREG(fst.st_mode)) {
+            ::close(fd);
+            continue;
+        }
         if (::flock(fd, LOCK_EX | LOCK_NB) == 0) {
             lease.fd = fd;
             lease.uid = uid;
-            return true;
+            return "";
         }
         ::close(fd);
     }
-    return false;
+    return "every uid of " + std::to_string(sb.uid_pool_first) + "-" +
+           std::to_string(sb.uid_pool_first + sb.uid_pool_size - 1) + " is in use";
+}
+
+// ---- the allow-list file system --------------------------------------------------------------------------
+// Built before fork as a list of steps on absolute paths inside the new root; carried out in the child between
+// fork and exec with plain system calls only (async-signal-safe). Every path keeps its host name inside.
+struct MountStep {
+    enum Kind { dir, file, link, bind_ro, bind_rw, bind_dev, tmpfs, proc } kind;
+    std::string target;  // inside the new root (root + path)
+    std::string source;  // host path (binds), link text (link), mount options (tmpfs)
+};
+struct MountPlan {
+    std::string root;  // the new root's mount point on the host (an empty folder, root-only)
+    std::vector<MountStep> steps;
+    std::string cwd;   // the working folder (same name inside)
+};
+
+// The steps that make `path` (a host path) exist inside the plan: its missing parents as folders; a symbolic
+// link as the same link, and its target too (so a link to the models folder keeps working).
+void add_visible(MountPlan& plan, std::filesystem::path path, MountStep::Kind bind, int depth = 0) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    if (depth > 8 || path.empty() || !path.is_absolute()) return;
+    path = path.lexically_normal();
+    if (path.has_filename() == false && path != path.root_path()) path = path.parent_path();
+    const fs::path parent = fs::weakly_canonical(path.parent_path(), ec);
+    if (ec) return;
+    path = parent / path.filename();
+    const auto st = fs::symlink_status(path, ec);
+    if (ec || !fs::exists(st)) return;
+    for (fs::path p = parent; p != p.root_path(); p = p.parent_path())
+        plan.steps.push_back({MountStep::dir, plan.root + p.string(), ""});
+    if (fs::is_symlink(st)) {
+        plan.steps.push_back({MountStep::link, plan.root + path.string(), fs::read_symlink(path, ec).string()});
+        const fs::path target = fs::weakly_canonical(path, ec);
+        if (!ec) add_visible(plan, target, bind, depth + 1);
+        return;
+    }
+    plan.steps.push_back({fs::is_directory(st) ? MountStep::dir : MountStep::file, plan.root + path.string(), ""});
+    plan.steps.push_back({bind, plan.root + path.string(), path.string()});
+}
+
+MountPlan make_plan(const std::string& root, const Sandbox& sb, const std::string& workdir) {
+    MountPlan plan;
+    plan.root = root;
+    plan.cwd = workdir;
+    // The system's own folders (merged /usr: /bin, /lib* are links into /usr) and the pieces of /etc that the
+    // dynamic loader and the compiler driver read.
+    for (const char* p : {"/usr", "/bin", "/sbin", "/lib", "/lib32", "/lib64", "/libx32", "/etc/alternatives",
+                          "/etc/ld.so.cache", "/etc/ld.so.conf", "/etc/ld.so.conf.d", "/etc/localtime",
+                          "/etc/passwd", "/etc/group", "/sys/devices/system/cpu"})
+        add_visible(plan, p, MountStep::bind_ro);
+    for (const char* p : {"/dev/null", "/dev/zero", "/dev/full", "/dev/random", "/dev/urandom"})
+        add_visible(plan, p, MountStep::bind_dev);
+    for (const auto& [name, to] : {std::pair{"/dev/fd", "/proc/self/fd"}, std::pair{"/dev/stdin", "/proc/self/fd/0"},
+                                   std::pair{"/dev/stdout", "/proc/self/fd/1"}, std::pair{"/dev/stderr", "/proc/self/fd/2"}})
+        plan.steps.push_back({MountStep::link, root + name, to});
+    plan.steps.push_back({MountStep::dir, root + "/proc", ""});
+    plan.steps.push_back({MountStep::proc, root + "/proc", ""});
+    for (const char* p : {"/tmp", "/var", "/var/tmp", "/dev", "/dev/shm"}) plan.steps.push_back({MountStep::dir, root + p, ""});
+    for (const char* p : {"/tmp", "/var/tmp", "/dev/shm"}) {
+        plan.steps.push_back({MountStep::tmpfs, root + p, "size=256m,mode=1777"});
+    }
+    for (const auto& v : sb.visible) add_visible(plan, v, MountStep::bind_ro);
+    if (!workdir.empty()) add_visible(plan, workdir, MountStep::bind_rw);
+    // Parents before children; at one path: make it, then mount on it. Duplicates go.
+    auto rank = [](MountStep::Kind k) { return k == MountStep::dir || k == MountStep::file || k == MountStep::link ? 0 : 1; };
+    std::stable_sort(plan.steps.begin(), plan.steps.end(), [&](const MountStep& a, const MountStep& b) {
+        const int ra = rank(a.kind), rb = rank(b.kind);
+        return std::tie(a.target, ra) < std::tie(b.target, rb);
+    });
+    plan.steps.erase(std::unique(plan.steps.begin(), plan.steps.end(),
+                                 [](const MountStep& a, const MountStep& b) {
+                                     return a.target == b.target && a.kind == b.kind && a.source == b.source;
+                                 }),
+                     plan.steps.end());
+    // What lies inside a folder already shown read-only is there already: no second mount, no mkdir.
+    std::vector<MountStep> kept;
+    std::vector<std::string> ro_roots;
+    for (auto& st : plan.steps) {
+        const bool under = std::any_of(ro_roots.begin(), ro_roots.end(), [&](const std::string& r) {
+            return st.target.size() > r.size() && st.target.compare(0, r.size(), r) == 0 && st.target[r.size()] == '/';
+        });
+        if (under && st.kind != MountStep::bind_rw && st.kind != MountStep::tmpfs && st.kind != MountStep::proc) continue;
+        if (st.kind == MountStep::bind_ro) ro_roots.push_back(st.target);
+        kept.push_back(std::move(st));
+    }
+    plan.steps = std::move(kept);
+    return plan;
+}
+
+// Async-signal-safe: carry out the plan in a fresh mount namespace and make its root ours. Returns 0, or the
+// number of the step that failed (errno set).
+int enter_plan(const MountPlan& plan) {
+    if (::unshare(CLONE_NEWNS) != 0) return 1;
+    if (::mount(nullptr, "/", nullptr, MS_REC | MS_PRIVATE, nullptr) != 0) return 2;
+    if (::mount("tmpfs", plan.root.c_str(), "tmpfs", MS_NOSUID | MS_NODEV, "size=1m,mode=0755") != 0) return 3;
+    const unsigned long ro = MS_REMOUNT | MS_BIND | MS_RDONLY | MS_NOSUID | MS_NODEV;
+    for (const auto& s : plan.steps) {
+        const char* t = s.target.c_str();
+        switch (s.kind) {
+            case MountStep::dir:
+                if (::mkdir(t, 0755) != 0 && errno != EEXIST && errno != EROFS) return 10;
+                break;
+            case MountStep::file: {
+                int fd = ::open(t, O_WRONLY | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
+                if (fd < 0 && errno != EEXIST && errno != EROFS && errno != EACCES) return 11;
+                if (fd >= 0) ::close(fd);
+                break;
+            }
+            case MountStep::link:
+                if (::symlink(s.source.c_str(), t) != 0 && errno != EEXIST) return 12;
+                break;
+            case MountStep::bind_ro:
+            case MountStep::bind_rw:
+            case MountStep::bind_dev:
+                if (::mount(s.source.c_str(), t, nullptr, MS_BIND | MS_REC, nullptr) != 0) return 13;
+                if (s.kind == MountStep::bind_ro && ::mount(nullptr, t, nullptr, ro, nullptr) != 0 &&
+                    ::mount(nullptr, t, nullptr, MS_REMOUNT | MS_BIND | MS_RDONLY, nullptr) != 0)
+                    return 14;
+                if (s.kind == MountStep::bind_rw &&
+                    ::mount(nullptr, t, nullptr, MS_REMOUNT | MS_BIND | MS_NOSUID | MS_NODEV, nullptr) != 0 &&
+                    ::mount(nullptr, t, nullptr, MS_REMOUNT | MS_BIND, nullptr) != 0)
+                    return 15;
+                if (s.kind == MountStep::bind_dev &&
+                    ::mount(nullptr, t, nullptr, MS_REMOUNT | MS_BIND | MS_NOSUID, nullptr) != 0 &&
+                    ::mount(nullptr, t, nullptr, MS_REMOUNT | MS_BIND, nullptr) != 0)
+                    return 16;
+                break;
+            case MountStep::tmpfs:
+                if (::mount("tmpfs", t, "tmpfs", MS_NOSUID | MS_NODEV, s.source.c_str()) != 0) return 17;
+                break;
+            case MountStep::proc:
+                // A proc of our own that hides other users' processes; where that is refused (a container
+                // that masks parts of /proc), the host's, read-only (other uids' details stay unreadable).
+                if (::mount("proc", t, "proc", MS_NOSUID | MS_NODEV | MS_NOEXEC, "hidepid=2") != 0 &&
+                    (::mount("/proc", t, nullptr, MS_BIND | MS_REC, nullptr) != 0 ||
+                     ::mount(nullptr, t, nullptr, ro | MS_NOEXEC, nullptr) != 0))
+                    return 18;
+                break;
+        }
+    }
+    if (::chdir(plan.root.c_str()) != 0) return 20;
+    if (::syscall(SYS_pivot_root, ".", ".") == 0) {
+        if (::umount2(".", MNT_DETACH) != 0) return 21;
+    } else if (::chroot(".") != 0) {
+        return 22;
+    }
+    if (::chdir("/") != 0) return 23;
+    if (::mount(nullptr, "/", nullptr, MS_REMOUNT | MS_RDONLY | MS_NOSUID | MS_NODEV, nullptr) != 0) return 24;
+    if (!plan.cwd.empty() && ::chdir(plan.cwd.c_str()) != 0) return 25;
+    return 0;
+}
+
+const char* plan_step_name(int step) {
+    switch (step) {
+        case 1: return "unshare(CLONE_NEWNS)";
+        case 2: return "making / private";
+        case 3: return "the new root's tmpfs";
+        case 10: case 11: case 12: return "a mount point in the new root";
+        case 13: return "a bind mount";
+        case 14: case 15: case 16: return "remounting a bind mount";
+        case 17: return "a private tmpfs (/tmp, /var/tmp, /dev/shm)";
+        case 18: return "mounting /proc";
+        case 20: case 23: case 25: return "chdir";
+        case 21: case 22: return "pivot_root/chroot";
+        case 24: return "making the new root read-only";
+        case 30: return "unshare(CLONE_NEWNET)";
+        case 31: return "dropping privileges";
+    }
+    return "setting up the sandbox";
+}
+
+// The child's environment when it is untrusted: only what a program needs to run, never the grader's own.
+bool env_allowed(const char* e) {
+    for (const char* name : {"LANG=", "LANGUAGE=", "TZ=", "TERM="})
+        if (std::strncmp(e, name, std::strlen(name)) == 0) return true;
+    return std::strncmp(e, "LC_", 3) == 0;
 }
 
 // Async-signal-safe: the parent pid of /proc/<pid>/stat, or -1.
@@ -233,10 +424,30 @@ ChildOutcome run_child(const std::vector<std::string>& argv, const std::string& 
     ChildOutcome out;
     const Sandbox& sb = opt.sandbox;
     const bool root = ::geteuid() == 0;
+    // A whole run's wall-clock cap: nothing starts after it, nothing runs past it.
+    if (opt.deadline) {
+        const double left = std::chrono::duration<double>(*opt.deadline - Clock::now()).count();
+        if (left <= 0) {
+            out.timed_out = true;
+            out.started = false;
+            return out;
+        }
+        timeout_s = std::min(timeout_s, left);
+    }
+    // Fail closed: isolation that was asked for and cannot be had means nothing runs.
     UidLease lease;
-    const bool drop = sb.drop_privileges && root && lease_uid(sb, lease);
-    // The test's own working folder (owned by the test's uid), removed afterwards.
-    std::string workdir;
+    bool drop = false;
+    if (sb.drop_privileges && root) {
+        const std::string why = lease_uid(sb, lease);
+        drop = why.empty();
+        if (!drop && sb.require_isolation) throw SandboxError("no sandbox uid can be leased: " + why);
+    }
+    if (sb.require_isolation && !root)
+        throw SandboxError("the grader does not run as root: it can give tests neither a uid nor a file system of their own");
+    const bool use_plan = sb.allow_list && root;
+    // The test's own working folder (owned by the test's uid), removed afterwards; next to it, the mount point
+    // of its allow-list root.
+    std::string workdir, newroot;
     if (!sb.workdir.empty()) {
         std::error_code ec;
         std::filesystem::create_directories(sb.workdir, ec);
@@ -247,16 +458,25 @@ ChildOutcome run_child(const std::vector<std::string>& argv, const std::string& 
             if (sb.prepare) sb.prepare(workdir, drop ? lease.uid : 0);
         }
     }
-    int out_pipe[2], verdict_pipe[2], status_pipe[2], ctrl_pipe[2];
+    if (use_plan) {
+        std::string tmpl = ((sb.workdir.empty() ? std::filesystem::path("/tmp") : sb.workdir) / "root-XXXXXX").string();
+        if (::mkdtemp(tmpl.data())) newroot = tmpl;
+        else if (sb.require_isolation) throw SandboxError("cannot make the sandbox's root folder in " + sb.workdir.string());
+    }
+    MountPlan plan;
+    if (!newroot.empty()) plan = make_plan(newroot, sb, workdir);
+    int out_pipe[2], verdict_pipe[2], status_pipe[2], ctrl_pipe[2], setup_pipe[2];
     if (::pipe2(out_pipe, O_CLOEXEC) != 0) throw std::runtime_error("grader: pipe failed");
     if (::pipe2(verdict_pipe, O_CLOEXEC) != 0 || ::pipe2(status_pipe, O_CLOEXEC) != 0 ||
-        ::pipe2(ctrl_pipe, O_CLOEXEC) != 0)
+        ::pipe2(ctrl_pipe, O_CLOEXEC) != 0 || ::pipe2(setup_pipe, O_CLOEXEC) != 0)
         throw std::runtime_error("grader: pipe failed");
     // Everything the children need is prepared before fork: after fork only async-signal-safe calls.
     std::vector<std::string> env_strings;
+    if (sb.clean_env) env_strings.emplace_back("PATH=/usr/local/bin:/usr/bin:/bin");
     for (char** e = environ; *e; ++e) {
         if (std::strncmp(*e, "GEOLAB_TOKEN=", 13) == 0 || std::strncmp(*e, "GEOLAB_RESULT_FD=", 17) == 0) continue;
         if (!workdir.empty() && (std::strncmp(*e, "TMPDIR=", 7) == 0 || std::strncmp(*e, "HOME=", 5) == 0)) continue;
+        if (sb.clean_env && !env_allowed(*e)) continue;
         env_strings.emplace_back(*e);
     }
     if (!token.empty()) {
@@ -280,7 +500,7 @@ ChildOutcome run_child(const std::vector<std::string>& argv, const std::string& 
     for (auto& s : argv_copy) args.push_back(s.data());
     args.push_back(nullptr);
     std::vector<std::string> hide;
-    if (root)
+    if (root && newroot.empty())
         for (const auto& h : sb.hide)
             if (std::filesystem::is_directory(h)) hide.push_back(h.string());
     const rlim_t mem = memory_mb << 20;
@@ -289,6 +509,8 @@ ChildOutcome run_child(const std::vector<std::string>& argv, const std::string& 
     const rlim_t nproc = static_cast<rlim_t>(sb.max_processes);
     const unsigned uid = drop ? lease.uid : 0;
     const bool no_network = sb.no_network && root;
+    const bool strict = sb.require_isolation;
+    const MountPlan* plan_ptr = newroot.empty() ? nullptr : &plan;
     const char* cwd = workdir.empty() ? nullptr : workdir.c_str();
     int devnull = ::open("/dev/null", O_RDONLY | O_CLOEXEC);
     const pid_t grader = ::getpid();
@@ -300,8 +522,8 @@ ChildOutcome run_child(const std::vector<std::string>& argv, const std::string& 
         // ---- the supervisor ----
         // Other grader threads fork too: close every descriptor that is not ours (pipes of other tests, their
         // uid leases) so that their EOFs and locks do not wait for this test.
-        int keep[5] = {devnull, out_pipe[1], verdict_pipe[1], status_pipe[1], ctrl_pipe[0]};
-        for (int i = 1; i < 5; ++i)
+        int keep[7] = {devnull, out_pipe[1], verdict_pipe[1], status_pipe[1], ctrl_pipe[0], setup_pipe[0], setup_pipe[1]};
+        for (int i = 1; i < 7; ++i)
             for (int j = i; j > 0 && keep[j] < keep[j - 1]; --j) std::swap(keep[j], keep[j - 1]);
         unsigned from = 3;
         for (int fd : keep) {
@@ -317,9 +539,18 @@ ChildOutcome run_child(const std::vector<std::string>& argv, const std::string& 
         pid_t test = ::fork();
         if (test == 0) {
             // ---- the test ----
+            // A set-up step that fails is reported on the setup pipe (closed by exec: the program cannot write
+            // there) and the program is never started.
+            auto setup_failed = [&](int step) {
+                int msg[2] = {step, errno};
+                (void)!::write(setup_pipe[1], msg, sizeof msg);
+                ::_exit(125);
+            };
             ::setpgid(0, 0);
-            if (no_network) (void)::unshare(CLONE_NEWNET);
-            if (!hide.empty() && ::unshare(CLONE_NEWNS) == 0) {
+            if (no_network && ::unshare(CLONE_NEWNET) != 0 && strict) setup_failed(30);
+            if (plan_ptr) {
+                if (int step = enter_plan(*plan_ptr)) setup_failed(step);
+            } else if (!hide.empty() && ::unshare(CLONE_NEWNS) == 0) {
                 ::mount(nullptr, "/", nullptr, MS_REC | MS_PRIVATE, nullptr);
                 for (const auto& h : hide)
                     ::mount("tmpfs", h.c_str(), "tmpfs", MS_RDONLY | MS_NOSUID | MS_NODEV | MS_NOEXEC, "size=4k,mode=0555");
@@ -338,11 +569,7 @@ ChildOutcome run_child(const std::vector<std::string>& argv, const std::string& 
             ::dup2(out_fd, 1);
             ::dup2(out_fd, 2);
             if (!token.empty()) ::dup2(verdict_fd, 3);
-            if (uid && (::setgroups(0, nullptr) != 0 || ::setgid(uid) != 0 || ::setuid(uid) != 0)) {
-                const char msg[] = "grader: cannot drop privileges\n";
-                (void)!::write(2, msg, sizeof msg - 1);
-                ::_exit(126);
-            }
+            if (uid && (::setgroups(0, nullptr) != 0 || ::setgid(uid) != 0 || ::setuid(uid) != 0)) setup_failed(31);
             ::prctl(PR_SET_PDEATHSIG, SIGKILL);  // after setuid, which clears it
             ::execve(args[0], args.data(), envp.data());
             const char msg[] = "grader: cannot execute the test program\n";
@@ -352,6 +579,7 @@ ChildOutcome run_child(const std::vector<std::string>& argv, const std::string& 
         // The supervisor keeps no end of the output and verdict pipes: EOF there means every writer is gone.
         ::close(out_pipe[1]);
         ::close(verdict_pipe[1]);
+        ::close(setup_pipe[1]);
         ::close(devnull);
         int wstatus = 0;
         int killed = 0;
@@ -372,7 +600,16 @@ ChildOutcome run_child(const std::vector<std::string>& argv, const std::string& 
         } else {
             wstatus = 127 << 8;
         }
-        int msg[2] = {wstatus, killed};
+        int msg[4] = {wstatus, killed, 0, 0};
+        {
+            int setup[2] = {0, 0};
+            const int fl = ::fcntl(setup_pipe[0], F_GETFL);
+            ::fcntl(setup_pipe[0], F_SETFL, fl | O_NONBLOCK);
+            if (::read(setup_pipe[0], setup, sizeof setup) == static_cast<ssize_t>(sizeof setup)) {
+                msg[2] = setup[0];
+                msg[3] = setup[1];
+            }
+        }
         (void)!::write(status_pipe[1], msg, sizeof msg);
         ::_exit(0);
     }
@@ -382,6 +619,8 @@ ChildOutcome run_child(const std::vector<std::string>& argv, const std::string& 
     ::close(verdict_pipe[1]);
     ::close(status_pipe[1]);
     ::close(ctrl_pipe[0]);
+    ::close(setup_pipe[0]);
+    ::close(setup_pipe[1]);
 
     const auto deadline = t0 + std::chrono::duration<double>(timeout_s);
     const auto hard_deadline = deadline + std::chrono::seconds(15);
@@ -445,9 +684,20 @@ ChildOutcome run_child(const std::vector<std::string>& argv, const std::string& 
         std::error_code ec;
         std::filesystem::remove_all(workdir, ec);
     }
+    if (!newroot.empty()) ::rmdir(newroot.c_str());  // only ever a mount point inside the child's namespace
     out.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
     int wstatus = SIGKILL;  // no report from the supervisor: treat as killed
     if (status_bytes.size() >= 2 * sizeof(int)) std::memcpy(&wstatus, status_bytes.data(), sizeof(int));
+    if (status_bytes.size() >= 4 * sizeof(int)) {
+        int step = 0, err = 0;
+        std::memcpy(&step, status_bytes.data() + 2 * sizeof(int), sizeof(int));
+        std::memcpy(&err, status_bytes.data() + 3 * sizeof(int), sizeof(int));
+        if (step) {
+            out.sandbox_error = std::string("the sandbox could not be set up: ") + plan_step_name(step) + " failed (" +
+                                std::strerror(err) + ")";
+            if (strict) throw SandboxError(out.sandbox_error);
+        }
+    }
     if (WIFEXITED(wstatus)) {
         out.exited = true;
         out.exit_code = WEXITSTATUS(wstatus);
@@ -571,6 +821,25 @@ TestResult run_test(const std::filesystem::path& program, const TestInfo& test, 
 
 bool can_drop_privileges() { return ::geteuid() == 0; }
 
+std::string isolation_problem(const Sandbox& sb) {
+    if (::geteuid() != 0)
+        return "the grader does not run as root: tests get neither a uid nor a file system of their own";
+    RunOptions o;
+    o.sandbox = sb;
+    o.sandbox.require_isolation = true;
+    o.sandbox.prepare = nullptr;
+    o.sandbox.collect = nullptr;
+    o.memory_mb = 0;
+    try {
+        ChildOutcome c = run_child({"/bin/true"}, "", 30, o, 0);
+        if (!c.exited || c.exit_code != 0)
+            return "a trial run in the sandbox failed (exit status " + std::to_string(c.exit_code) + "): " + tail(c.output, 500);
+    } catch (const std::exception& e) {
+        return e.what();
+    }
+    return "";
+}
+
 CommandResult run_command(const std::vector<std::string>& argv, double timeout_s, const RunOptions& opt) {
     ChildOutcome c = run_child(argv, "", timeout_s, opt, opt.memory_mb);
     CommandResult r;
@@ -599,9 +868,17 @@ LabReport grade_program(const std::string& lab, const std::string& variant, cons
     report.results.resize(tests.size());
     std::atomic<std::size_t> next{0}, done{0};
     std::mutex progress_mutex;
+    std::string failure;  // the sandbox failed (fail closed): no further test starts
     auto worker = [&] {
         for (std::size_t i; (i = next++) < tests.size();) {
-            report.results[i] = run_test(program, tests[i], opt);
+            try {
+                report.results[i] = run_test(program, tests[i], opt);
+            } catch (const std::exception& e) {
+                std::lock_guard lock(progress_mutex);
+                if (failure.empty()) failure = e.what();
+                next = tests.size();
+                return;
+            }
             std::lock_guard lock(progress_mutex);
             ++done;
             if (opt.on_result) opt.on_result(report.results[i], done, tests.size());
@@ -610,6 +887,10 @@ LabReport grade_program(const std::string& lab, const std::string& variant, cons
     std::vector<std::thread> pool;
     for (int j = 0; j < std::max(1, opt.jobs); ++j) pool.emplace_back(worker);
     for (auto& t : pool) t.join();
+    if (!failure.empty()) {
+        report.error = failure;
+        report.results.clear();
+    }
     report.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
     return report;
 }

@@ -9,12 +9,17 @@
 #include <sstream>
 #include <stdexcept>
 
+#include <cxxabi.h>
 #include <sys/stat.h>
 #include <unistd.h>
+
+#include <cctype>
+#include <cstring>
 
 #include <nlohmann/json.hpp>
 
 #include "geolab/grading/release.hpp"
+#include "geolab/models.hpp"
 #include "text_file.hpp"
 
 namespace geolab::grading {
@@ -75,7 +80,8 @@ std::vector<std::string> split_command(const std::string& cmd) {
     return out;
 }
 
-// The lab's student files: basename -> the stub text (generated from solutions/ when it exists).
+// The lab's files: basename -> the stub text (generated from solutions/ when it exists); given files too (their
+// text is the course's, whatever is submitted).
 std::map<std::string, std::string> lab_files(const fs::path& root, const std::string& lab) {
     std::map<std::string, std::string> files;
     const fs::path sol = root / "solutions" / lab / "src", stu = root / "labs" / lab / "src";
@@ -93,10 +99,11 @@ std::map<std::string, std::string> lab_files(const fs::path& root, const std::st
 }
 
 // Run a trusted command (unzip, nm, ninja, the linker) with plain limits, no sandbox.
-CommandResult run_plain(const std::vector<std::string>& argv, double timeout_s, std::size_t memory_mb = 0) {
+CommandResult run_plain(const std::vector<std::string>& argv, double timeout_s, std::size_t memory_mb = 0,
+                        std::size_t output_cap = 4 << 20) {
     RunOptions o;
     o.memory_mb = memory_mb;
-    o.output_cap = 4 << 20;
+    o.output_cap = output_cap;
     o.file_size_mb = 1024;
     o.sandbox.no_network = false;
     return run_command(argv, timeout_s, o);
@@ -116,7 +123,8 @@ struct Picked {
     std::vector<std::string> ignored;
 };
 
-Picked pick_files(const fs::path& dir, const std::map<std::string, std::string>& wanted) {
+Picked pick_files(const fs::path& dir, const std::map<std::string, std::string>& wanted,
+                  const std::set<std::string>& given) {
     Picked p;
     std::vector<fs::path> all;
     for (auto it = fs::recursive_directory_iterator(dir, fs::directory_options::skip_permission_denied);
@@ -143,6 +151,10 @@ Picked pick_files(const fs::path& dir, const std::map<std::string, std::string>&
         const std::string base = f.filename().string(), rel = fs::relative(f, dir).string();
         if (!wanted.count(base)) {
             p.ignored.push_back(rel + " (not a file of this lab's src/)");
+        } else if (given.count(base)) {
+            const bool same = fs::file_size(f) < (1u << 20) && read_text(f) == wanted.at(base);
+            p.ignored.push_back(rel + (same ? " (given code: the course's copy is graded; yours is identical)"
+                                            : " (given code: the course's copy is graded; YOUR CHANGES TO IT ARE IGNORED)"));
         } else if (p.used.count(base)) {
             p.ignored.push_back(rel + " (another " + base + " was used: " +
                                 fs::relative(p.used[base], dir).string() + ")");
@@ -167,6 +179,19 @@ std::vector<std::string> compile_command(const fs::path& build, const fs::path& 
     }
     throw std::runtime_error(db.string() + " has no compile command for " + source.string() +
                              " (re-run cmake on the course build)");
+}
+
+// The folders a compile command reads headers from (-I, -isystem, -iquote, -idirafter; joined or separate):
+// what the compiler is shown, read-only, besides the system's own folders.
+std::vector<fs::path> include_dirs(const std::vector<std::string>& cmd) {
+    std::vector<fs::path> dirs;
+    for (std::size_t i = 0; i < cmd.size(); ++i)
+        for (const char* flag : {"-I", "-isystem", "-iquote", "-idirafter"}) {
+            const std::string f = flag;
+            if (cmd[i] == f && i + 1 < cmd.size()) dirs.push_back(cmd[i + 1]);
+            else if (cmd[i].size() > f.size() && cmd[i].compare(0, f.size(), f) == 0) dirs.push_back(cmd[i].substr(f.size()));
+        }
+    return dirs;
 }
 
 // The course's link command of test_<lab> (the last command ninja would run for it).
@@ -206,6 +231,376 @@ std::string tree_stamp(const fs::path& dir) {
              std::to_string(e.last_write_time().time_since_epoch().count()) + ";";
     }
     return s;
+}
+
+
+// ---- checks of the student's compiled code (defence in depth) ---------------------------------------------
+
+std::string demangle(const std::string& name) {
+    if (name.size() > 4096 || name.rfind("_Z", 0) != 0) return name;
+    int status = 0;
+    char* d = abi::__cxa_demangle(name.c_str(), nullptr, nullptr, &status);
+    std::string out = (status == 0 && d) ? d : name;
+    std::free(d);
+    return out;
+}
+
+// `nm -P` of `args`: (name, type letter) pairs; archive member headers are skipped.
+std::vector<std::pair<std::string, char>> nm_symbols(std::vector<std::string> args) {
+    const std::string nm = find_program("nm");
+    if (nm.empty()) throw std::runtime_error("nm not found (apt-get install binutils)");
+    args.insert(args.begin(), {nm, "-P", "--no-sort"});
+    CommandResult r = run_plain(args, 120, 0, 64 << 20);
+    std::vector<std::pair<std::string, char>> out;
+    std::istringstream in(r.output);
+    std::string line;
+    while (std::getline(in, line)) {
+        std::istringstream ls(line);
+        std::string name, type;
+        if (!(ls >> name >> type) || type.size() != 1 || name.back() == ':') continue;
+        out.push_back({name, type[0]});
+    }
+    return out;
+}
+
+bool is_weak(char t) { return t == 'W' || t == 'w' || t == 'V' || t == 'v' || t == 'u'; }
+bool is_code(char t) { return t == 'T' || t == 'W' || t == 'i' || t == 'w'; }
+
+// What the course's side of the link defines: the test objects, the other archives, the shared libraries the
+// test program loads (the C and C++ runtime among them), and the lab's API (the stub archive's strong symbols).
+struct CourseSymbols {
+    std::set<std::string> tests, others, shared, api;
+};
+
+CourseSymbols course_symbols(const std::vector<std::string>& link_args, const fs::path& build,
+                             const fs::path& course_program, const std::string& lab_archive) {
+    CourseSymbols c;
+    std::vector<std::string> objects, archives;
+    for (const auto& a : link_args) {
+        if (a.empty() || a[0] == '-') continue;
+        fs::path p = fs::path(a).is_relative() ? build / a : fs::path(a);
+        if (!fs::is_regular_file(p)) continue;
+        const std::string ext = p.extension().string();
+        if (ext == ".o") objects.push_back(p.string());
+        else if (ext == ".a" && p.filename() != lab_archive) archives.push_back(p.string());
+    }
+    std::vector<std::string> defined{"-g", "--defined-only"};
+    auto add = [&](std::vector<std::string> files, std::set<std::string>& into, bool dynamic) {
+        if (files.empty()) return;
+        std::vector<std::string> a = defined;
+        if (dynamic) a.push_back("-D");
+        a.insert(a.end(), files.begin(), files.end());
+        for (const auto& [n, t] : nm_symbols(a)) into.insert(n);
+    };
+    add(objects, c.tests, false);
+    add(archives, c.others, false);
+    std::vector<std::string> libs;
+    CommandResult l = run_plain({find_program("ldd"), course_program.string()}, 60);
+    std::istringstream in(l.output);
+    for (std::string line; std::getline(in, line);) {
+        auto slash = line.find('/');
+        if (slash == std::string::npos) continue;
+        std::string path = line.substr(slash, line.find(' ', slash) - slash);
+        if (fs::is_regular_file(path)) libs.push_back(path);
+    }
+    for (const auto& lib : libs) add({lib}, c.shared, true);
+    for (const auto& [n, t] : nm_symbols({"-g", "--defined-only", (build / lab_archive).string()}))
+        if (!is_weak(t)) c.api.insert(n);
+    return c;
+}
+
+// The problems of one student object: symbols defined outside the lab's API, early-running sections, raw
+// system-call instructions, uses of what only the tests define. Each a sentence a student can act on.
+std::vector<std::string> object_problems(const std::string& file, const fs::path& obj, const CourseSymbols& c) {
+    std::vector<std::string> problems;
+    std::set<std::string> own;
+    for (const auto& [n, t] : nm_symbols({obj.string()})) {
+        const std::string d = demangle(n);
+        if (t == 'i') {
+            problems.push_back(file + " defines the indirect function (ifunc) '" + d +
+                               "', whose resolver would run before any test code");
+            continue;
+        }
+        if (t == 'U' || t == 'w' || t == 'v' || (std::islower(static_cast<unsigned char>(t)) && t != 'u')) continue;
+        own.insert(n);
+        if (c.api.count(n) || n.rfind("DW.ref.", 0) == 0) continue;
+        const bool mangled = n.rfind("_Z", 0) == 0;
+        const bool theirs = c.shared.count(n) || c.others.count(n) || c.tests.count(n);
+        if (!mangled && is_code(t))
+            problems.push_back(file + " defines the C-linkage function '" + n +
+                               "' (extern \"C\", or a C library name): only the lab's API may be defined; make helpers "
+                               "static or put them in an anonymous namespace");
+        else if (!mangled && (theirs || n[0] == '_'))
+            problems.push_back(file + " defines the global '" + n + "', which the C library or the course's code uses");
+        else if (mangled && !is_weak(t) && theirs)
+            problems.push_back(file + " redefines '" + d + "', which the C++ runtime or the course's code defines");
+        else if (mangled && (n.rfind("_Znw", 0) == 0 || n.rfind("_Zna", 0) == 0 || n.rfind("_Zdl", 0) == 0 ||
+                             n.rfind("_Zda", 0) == 0))
+            problems.push_back(file + " replaces '" + d + "': replacing the global allocation functions is not allowed");
+    }
+    for (const auto& [n, t] : nm_symbols({"-u", obj.string()}))
+        if (c.tests.count(n) && !c.others.count(n) && !c.shared.count(n) && !c.api.count(n))
+            problems.push_back(file + " uses '" + demangle(n) +
+                               "', which only the test code defines (the tests' helpers are not part of the lab's API)");
+    const std::string objdump = find_program("objdump");
+    if (objdump.empty()) throw std::runtime_error("objdump not found (apt-get install binutils)");
+    {
+        std::istringstream in(run_plain({objdump, "-h", "-w", obj.string()}, 60).output);
+        for (std::string line; std::getline(in, line);) {
+            std::istringstream ls(line);
+            std::string idx, name;
+            if (!(ls >> idx >> name) || !std::isdigit(static_cast<unsigned char>(idx[0]))) continue;
+            auto starts = [&](const char* p) { return name.rfind(p, 0) == 0; };
+            if (starts(".preinit_array") || starts(".init_array.") || starts(".ctors") || starts(".dtors") ||
+                starts(".fini_array.") || name == ".init" || name == ".fini")
+                problems.push_back(file + " has a section '" + name +
+                                   "': code that runs before (or around) the program's own start-up is not allowed "
+                                   "(constructor priorities, .preinit_array, .ctors)");
+        }
+    }
+    {
+        std::istringstream in(run_plain({objdump, "-d", "--no-show-raw-insn", obj.string()}, 120, 0, 64 << 20).output);
+        std::string function;
+        for (std::string line; std::getline(in, line);) {
+            if (!line.empty() && line.back() == ':' && line.find(" <") != std::string::npos)
+                function = demangle(line.substr(line.find(" <") + 2, line.size() - line.find(" <") - 4));
+            auto tab = line.rfind('\t');
+            if (tab == std::string::npos) continue;
+            const std::string insn = line.substr(tab + 1);
+            if (insn.rfind("syscall", 0) == 0 || insn.rfind("sysenter", 0) == 0 ||
+                (insn.rfind("int", 0) == 0 && insn.find("$0x80") != std::string::npos)) {
+                problems.push_back(file + ": " + function + " executes a raw system call instruction ('" + insn +
+                                   "'): talk to the system through the C++ library only");
+                break;
+            }
+        }
+    }
+    return problems;
+}
+
+// ---- forbidden calls over the student's whole code --------------------------------------------------------
+// A call graph of all the student's objects together: nodes are their functions (locals qualified by file) and
+// one node per file for references from data (tables of function pointers, .init_array); edges come from the
+// disassembly's direct calls and from every relocation. Aliases (symbols at one address) are one function.
+struct CallGraph {
+    std::map<std::string, std::set<std::string>> edges;
+    std::map<std::string, std::string> file_of;     // node -> student file
+    std::map<std::string, bool> strong;             // node -> a strong (non-weak) definition
+    std::map<std::string, std::set<std::string>> alias;  // node -> the other names at its address
+};
+
+// A node as a student reads it: the demangled name without its parameter list.
+std::string pretty(const std::string& node) {
+    const auto hash = node.find('#');
+    std::string d = demangle(hash == std::string::npos ? node : node.substr(hash + 1));
+    if (const auto paren = d.find('('); paren != std::string::npos && paren > 0) d = d.substr(0, paren);
+    return d;
+}
+
+void add_object(CallGraph& g, const std::string& file, const fs::path& obj) {
+    const std::string objdump = find_program("objdump");
+    // The symbol table: functions by section and offset; locals get the file's name in front.
+    struct Fn {
+        std::string section, node;
+        unsigned long long start, size;
+    };
+    std::vector<Fn> fns;
+    std::set<std::string> locals;
+    {
+        std::istringstream in(run_plain({objdump, "-t", "-w", obj.string()}, 60, 0, 64 << 20).output);
+        for (std::string line; std::getline(in, line);) {
+            // "0000000000000000 g     F .text	0000000000000123 name"
+            if (line.size() < 26 || line[16] != ' ') continue;
+            const std::string flags = line.substr(17, 7);
+            const auto tab = line.find('\t', 25);
+            if (tab == std::string::npos) continue;
+            const std::string section = line.substr(25, tab - 25);
+            std::istringstream rest(line.substr(tab + 1));
+            std::string size, name;
+            if (!(rest >> size >> name)) continue;
+            const bool local = flags[0] == 'l';
+            if (flags[6] != 'F' && flags[6] != 'i' && flags.find('F') == std::string::npos) continue;
+            const std::string node = local ? file + "#" + name : name;
+            if (local) locals.insert(name);
+            fns.push_back({section, node, std::stoull(line.substr(0, 16), nullptr, 16), std::stoull(size, nullptr, 16)});
+            g.file_of[node] = file;
+            g.strong[node] = g.strong[node] || flags[1] != 'w';
+            g.edges[node];
+        }
+    }
+    for (const auto& a : fns)
+        for (const auto& b : fns)
+            if (&a != &b && a.section == b.section && a.start == b.start) g.alias[a.node].insert(b.node);
+    auto node_of = [&](const std::string& name) { return locals.count(name) ? file + "#" + name : name; };
+    auto at = [&](const std::string& section, unsigned long long off) -> std::string {
+        for (const auto& f : fns)
+            if (f.section == section && off >= f.start && off < f.start + std::max(1ull, f.size)) return f.node;
+        return "";
+    };
+    // A relocation's target: "name", "name+0x10", ".text+0x1a0" (a local function by its section and offset).
+    auto target = [&](const std::string& type, std::string expr) -> std::string {
+        long long addend = 0;
+        auto sign = expr.find_last_of("+-");
+        if (sign != std::string::npos && sign > 0 && expr.compare(sign + 1, 2, "0x") == 0) {
+            addend = std::stoll(expr.substr(sign + 3), nullptr, 16) * (expr[sign] == '-' ? -1 : 1);
+            expr = expr.substr(0, sign);
+        }
+        if (!expr.empty() && expr[0] == '.') {
+            if (type.find("PC32") != std::string::npos || type.find("PLT32") != std::string::npos) addend += 4;
+            return addend >= 0 ? at(expr, static_cast<unsigned long long>(addend)) : "";
+        }
+        return node_of(expr);
+    };
+    // Code: "Disassembly of section S:", "<fn>:" headers, calls and jumps to "<name>", relocation lines.
+    {
+        std::istringstream in(run_plain({objdump, "-dr", "-w", "--no-show-raw-insn", obj.string()}, 120, 0, 256 << 20).output);
+        std::string current;
+        for (std::string line; std::getline(in, line);) {
+            if (line.rfind("Disassembly of section ", 0) == 0) {
+                current.clear();
+                continue;
+            }
+            if (!line.empty() && line.back() == ':' && line.find(" <") != std::string::npos && line[0] != ' ') {
+                const auto a = line.find(" <") + 2;
+                current = node_of(line.substr(a, line.size() - a - 2));
+                continue;
+            }
+            if (current.empty()) continue;
+            const auto r = line.find("R_X86_64_");
+            if (r != std::string::npos) {
+                std::istringstream ls(line.substr(r));
+                std::string type, expr;
+                if (ls >> type >> expr) {
+                    const std::string t = target(type, expr);
+                    if (!t.empty() && t != current) g.edges[current].insert(t);
+                }
+                continue;
+            }
+            const auto lt = line.rfind('<'), gt = line.rfind('>');
+            if ((line.find("call") != std::string::npos || line.find("jmp") != std::string::npos) && lt != std::string::npos &&
+                gt != std::string::npos && gt > lt) {
+                std::string name = line.substr(lt + 1, gt - lt - 1);
+                if (auto plus = name.find('+'); plus != std::string::npos) name = name.substr(0, plus);
+                const std::string t = node_of(name);
+                if (t != current) g.edges[current].insert(t);
+            }
+        }
+    }
+    // Data: every relocation outside code and unwind/debug sections, as one node per file.
+    {
+        std::istringstream in(run_plain({objdump, "-r", "-w", obj.string()}, 60, 0, 64 << 20).output);
+        std::string section;
+        const std::string data_node = file + "#(data)";
+        for (std::string line; std::getline(in, line);) {
+            if (line.rfind("RELOCATION RECORDS FOR [", 0) == 0) {
+                section = line.substr(24, line.find(']') - 24);
+                continue;
+            }
+            if (section.empty() || section.rfind(".text", 0) == 0 || section.rfind(".eh_frame", 0) == 0 ||
+                section.rfind(".debug", 0) == 0 || section.rfind(".note", 0) == 0 || section == ".gcc_except_table")
+                continue;
+            std::istringstream ls(line);
+            std::string off, type, expr;
+            if (!(ls >> off >> type >> expr) || type.rfind("R_", 0) != 0) continue;
+            const std::string t = target(type, expr);
+            if (t.empty()) continue;
+            g.edges[data_node].insert(t);
+            g.file_of[data_node] = file;
+        }
+    }
+}
+
+// The forbidden entry matches a symbol: as a substring of its mangled or its demangled name.
+bool entry_matches(const ForbiddenCall& f, const std::string& node) {
+    const std::string name = node.substr(node.find('#') == std::string::npos ? 0 : node.find('#') + 1);
+    return name.find(f.symbol) != std::string::npos || demangle(name).find(f.symbol) != std::string::npos;
+}
+
+// The forbidden entry's symbols in the graph (aliases included), and the files that hold a strong definition of
+// one of them: there the student writes that function's own task, so those files are exempt.
+std::set<std::string> forbidden_nodes(const CallGraph& g, const ForbiddenCall& f) {
+    std::set<std::string> bad;
+    for (const auto& [n, e] : g.edges) {
+        if (entry_matches(f, n)) bad.insert(n);
+        for (const auto& t : e)
+            if (entry_matches(f, t)) bad.insert(t);
+    }
+    for (const auto& b : std::set<std::string>(bad))
+        if (g.alias.count(b)) bad.insert(g.alias.at(b).begin(), g.alias.at(b).end());
+    return bad;
+}
+std::set<std::string> exempt_files(const CallGraph& g, const std::set<std::string>& bad) {
+    std::set<std::string> files;
+    for (const auto& b : bad)
+        if (g.file_of.count(b) && g.strong.count(b) && g.strong.at(b)) files.insert(g.file_of.at(b));
+    return files;
+}
+
+// Every student function (or data node) that reaches a forbidden symbol, through any of the student's own
+// functions in any file. The file holding the student's own (strong) definition of the forbidden function is
+// exempt (that is where its task is written); so is the forbidden function itself.
+std::vector<ForbiddenCall> forbidden_in_graph(const CallGraph& g, const std::vector<ForbiddenCall>& list,
+                                              const std::string& lab) {
+    std::vector<ForbiddenCall> hits;
+    for (const auto& f : list) {
+        const std::set<std::string> bad = forbidden_nodes(g, f);
+        if (bad.empty()) continue;
+        const std::set<std::string> exempt = exempt_files(g, bad);
+        std::set<std::string> reported;
+        for (const auto& [start, unused] : g.edges) {
+            if (bad.count(start) || !g.file_of.count(start)) continue;
+            const std::string file = g.file_of.at(start);
+            if (exempt.count(file) || reported.count(file)) continue;
+            // Breadth-first through the student's functions; remember the way for the message.
+            std::map<std::string, std::string> from{{start, ""}};
+            std::vector<std::string> queue{start};
+            std::string found;
+            for (std::size_t qi = 0; qi < queue.size() && found.empty(); ++qi) {
+                const auto it = g.edges.find(queue[qi]);
+                if (it == g.edges.end()) continue;
+                for (const auto& t : it->second) {
+                    if (from.count(t)) continue;
+                    from[t] = queue[qi];
+                    if (bad.count(t)) {
+                        found = t;
+                        break;
+                    }
+                    if (g.edges.count(t)) queue.push_back(t);
+                }
+            }
+            if (found.empty()) continue;
+            std::vector<std::string> way;
+            for (std::string n = from[found]; !n.empty() && n != start; n = from[n]) way.push_back(pretty(n));
+            std::reverse(way.begin(), way.end());
+            ForbiddenCall hit = f;
+            hit.file = "labs/" + lab + "/src/" + file;
+            hit.where = (start.find("#(data)") != std::string::npos ? std::string("a table of function pointers")
+                                                                     : pretty(start));
+            for (const auto& w : way) hit.where += " -> " + w;
+            hit.where += " -> " + pretty(found);
+            hits.push_back(hit);
+            reported.insert(file);
+        }
+    }
+    return hits;
+}
+
+// A regular expression that matches exactly `text` (llvm::Regex, POSIX extended).
+std::string regex_escape(const std::string& text) {
+    std::string o;
+    for (char c : text) {
+        if (std::strchr(".^$|()[]{}*+?\\", c)) o += '\\';
+        o += c;
+    }
+    return o;
+}
+
+// The clang-query matcher of one forbidden entry: a call to, or a reference of, a function whose qualified name
+// ends with the entry, written in the student's file (templates and inline functions included).
+std::string ast_matcher(const ForbiddenCall& f) {
+    const std::string re = "(^|::)" + regex_escape(f.symbol) + "$";
+    return "match expr(anyOf(callExpr(callee(functionDecl(matchesName(\"" + re +
+           "\")))), declRefExpr(to(functionDecl(matchesName(\"" + re + "\"))))), isExpansionInMainFile())";
 }
 
 // A TestResult for a check of the grader (0 points unless it zeroes a task).
@@ -261,6 +656,14 @@ std::vector<ForbiddenCall> read_forbidden_list(const fs::path& file) {
 std::string SubmissionReport::summary() const {
     std::ostringstream os;
     os << "status: " << to_string(status) << "\n";
+    if (!isolation.empty()) {
+        if (isolation.rfind("NOT ISOLATED", 0) == 0)
+            os << "!!!!!!!! " << isolation << "\n!!!!!!!! the student's code ran with the grader's rights and could see "
+                  "the course tree: do not trust this grade for a submission you do not trust\n";
+        else
+            os << "sandbox: " << isolation << "\n";
+    }
+    if (capped) os << "the wall-clock cap of the whole submission was reached: what had not finished scores 0\n";
     if (!error.empty()) os << "grader error: " << error << "\n";
     if (!used.empty()) {
         os << "files graded:";
@@ -272,12 +675,19 @@ std::string SubmissionReport::summary() const {
         for (const auto& s : stubbed) os << " " << s;
         os << "\n";
     }
+    if (!given.empty()) {
+        os << "given files (always the course's copy):";
+        for (const auto& g : given) os << " " << g;
+        os << "\n";
+    }
+    for (const auto& r : rejected) os << "rejected: " << r << "\n";
     if (!ignored.empty()) {
-        os << "ignored (only the lab's src/*.cpp files are graded):\n";
+        os << "ignored (only the lab's own src/*.cpp files are graded, given files excepted):\n";
         for (const auto& i : ignored) os << "  " << i << "\n";
     }
     for (const auto& f : forbidden)
-        os << "forbidden call: " << f.file << " calls " << f.symbol << (f.reason.empty() ? "" : " (" + f.reason + ")")
+        os << "forbidden call: " << f.file << " calls " << f.symbol << (f.where.empty() ? "" : " [" + f.where + "]")
+           << (f.reason.empty() ? "" : " (" + f.reason + ")")
            << (f.task.empty() ? "" : "; task '" + f.task + "' scores 0") << "\n";
     if (status == SubmissionStatus::compile_error) os << "\nYour code did not compile; every test scores 0.\n";
     if (!compiler_output.empty()) os << "\n--- compiler messages ---\n" << compiler_output << "\n";
@@ -340,14 +750,18 @@ SubmissionReport grade_submission(const fs::path& submission, const SubmissionOp
         } else if (!fs::is_directory(submission)) {
             throw std::runtime_error(submission.string() + ": no such folder or zip file");
         }
-        Picked picked = pick_files(sub_dir, files);
+        const auto given = given_files(root / "labs" / opt.lab);
+        Picked picked = pick_files(sub_dir, files, given);
         rep.ignored = picked.ignored;
 
-        // 2. The lab's sources: submitted files, stubs for the rest.
+        // 2. The lab's sources: submitted files, stubs for the rest, the course's copy of given files.
         fs::remove_all(work / "src");
         make_dir(work / "src", 0700);
         for (const auto& [name, stub] : files) {
-            if (picked.used.count(name)) {
+            if (given.count(name)) {
+                write_text(work / "src" / name, stub);
+                rep.given.push_back(name);
+            } else if (picked.used.count(name)) {
                 fs::copy_file(picked.used[name], work / "src" / name, fs::copy_options::overwrite_existing);
                 fs::permissions(work / "src" / name, fs::perms(0644));
                 rep.used.push_back(name + " <- " + fs::relative(picked.used[name], sub_dir).string());
@@ -357,13 +771,31 @@ SubmissionReport grade_submission(const fs::path& submission, const SubmissionOp
             }
         }
 
-        // The sandbox of everything untrusted: its own uid, no network, the answers out of sight.
+        // The sandbox of everything untrusted: its own uid, no network, a file system built from an allow-list,
+        // a clean environment, and a wall-clock cap on the whole submission. Fail closed: as root, a sandbox that
+        // cannot be set up means no grading (unless the instructor says --allow-unisolated, and then loudly).
         RunOptions sandboxed = opt.run;
-        sandboxed.sandbox.drop_privileges = true;
-        sandboxed.sandbox.no_network = true;
-        sandboxed.sandbox.workdir = work / "tmp";
-        sandboxed.sandbox.hide = {root / "solutions", root / "tests", build / "CMakeFiles", build / "bin",
-                                  build / "tests", work / "src", cache};
+        Sandbox& sb = sandboxed.sandbox;
+        sb.drop_privileges = true;
+        sb.no_network = true;
+        sb.workdir = work / "tmp";
+        sb.allow_list = true;
+        sb.clean_env = true;
+        const std::string problem = isolation_problem(sb);
+        if (problem.empty()) {
+            sb.require_isolation = true;
+            rep.isolation = "isolated (own uid, allow-list file system, private /tmp, no network, clean environment)";
+        } else if (can_drop_privileges() && !opt.allow_unisolated) {
+            throw SandboxError("refusing to grade: the sandbox cannot be set up: " + problem +
+                               " (fix that, or grade with --allow-unisolated to run the student's code NOT ISOLATED)");
+        } else {
+            rep.isolation = "NOT ISOLATED: " + problem;
+            sb.allow_list = false;  // what is left: the old hide-list, where root can make it
+            sb.hide = {root / "solutions", root / "tests", build / "CMakeFiles", build / "bin", build / "tests",
+                       work / "src", cache};
+        }
+        if (opt.max_seconds > 0) sandboxed.deadline = t0 + std::chrono::duration_cast<Clock::duration>(
+                                                              std::chrono::duration<double>(opt.max_seconds));
 
         const std::string stamp = tree_stamp(root / "labs" / opt.lab / "include") + tree_stamp(root / "lib" / "include") +
                                   tree_stamp(build / "lib" / "include");
@@ -412,6 +844,7 @@ SubmissionReport grade_submission(const fs::path& submission, const SubmissionOp
                     continue;
                 }
                 RunOptions o = sandboxed;
+                o.sandbox.visible = include_dirs(cmd);
                 o.memory_mb = std::max<std::size_t>(opt.run.memory_mb, 4096);
                 o.output_cap = 256 << 10;
                 bool produced = false;
@@ -506,37 +939,139 @@ SubmissionReport grade_submission(const fs::path& submission, const SubmissionOp
             return finish();
         }
 
-        // 5. Forbidden calls: the undefined symbols of each student object against labs/NN/forbidden.txt.
-        const auto forbidden =
-            read_forbidden_list(opt.forbidden.empty() ? root / "labs" / opt.lab / "forbidden.txt" : opt.forbidden);
+        // 5. Defence in depth on the student's objects (given files are the course's): only the lab's API may be
+        //    defined, nothing may run before the program's start-up, no raw system calls, no test-only helpers.
+        //    Any finding scores the whole submission 0.
         std::vector<TestResult> checks;
-        if (!forbidden.empty()) {
-            const std::string nm = find_program("nm");
-            std::vector<std::string> found_msgs;
+        std::vector<std::pair<std::string, fs::path>> student_objects;  // (basename, object), editable files only
+        {
             std::size_t k = 0;
             for (const auto& [name, stub] : files) {
                 const fs::path obj = objects[k++];
-                std::string syms;
-                for (bool demangle : {false, true}) {
-                    std::vector<std::string> a{nm, "-u"};
-                    if (demangle) a.push_back("-C");
-                    a.push_back(obj.string());
-                    syms += run_plain(a, 60).output + "\n";
-                }
-                for (const auto& f : forbidden) {
-                    if (syms.find(f.symbol) == std::string::npos) continue;
-                    ForbiddenCall hit = f;
-                    hit.file = "labs/" + opt.lab + "/src/" + name;
-                    rep.forbidden.push_back(hit);
-                    found_msgs.push_back(hit.file + " calls " + f.symbol + (f.reason.empty() ? "" : ": " + f.reason) +
-                                         (f.task.empty() ? "" : " (task '" + f.task + "' scores 0)"));
+                if (!given.count(name)) student_objects.push_back({name, obj});
+            }
+        }
+        const std::vector<std::string> link_args = link_command(build, opt.lab);
+        const CourseSymbols course = course_symbols(link_args, build, course_program, "liblab_" + opt.lab.substr(0, 2) + ".a");
+        for (const auto& [name, obj] : student_objects)
+            for (auto& p : object_problems("labs/" + opt.lab + "/src/" + name, obj, course)) rep.rejected.push_back(p);
+        checks.push_back(check_result("student code defines only the lab's API, runs nothing early, makes no raw system calls",
+                                      rep.rejected.empty(),
+                                      rep.rejected.empty() ? std::vector<std::string>{"nothing found"} : rep.rejected));
+
+        // 6. Forbidden calls, over the student's whole code: the call graph of all their objects together (a wrapper
+        //    in another file, an alias, a function pointer), and the source through clang's AST (templates and
+        //    inline functions, which leave no call in the object).
+        const auto forbidden =
+            read_forbidden_list(opt.forbidden.empty() ? root / "labs" / opt.lab / "forbidden.txt" : opt.forbidden);
+        if (!forbidden.empty()) {
+            CallGraph graph;
+            for (const auto& [name, obj] : student_objects) add_object(graph, name, obj);
+            std::vector<ForbiddenCall> hits = forbidden_in_graph(graph, forbidden, opt.lab);
+            std::vector<std::string> notes;
+            const std::string clang_query = find_program("clang-query");
+            if (clang_query.empty()) {
+                notes.push_back("clang-query is not installed (apt-get install clang-tools): template and inline calls "
+                                "were not checked");
+            } else {
+                for (const auto& [name, obj] : student_objects) {
+                    const std::string text = read_text(work / "src" / name);
+                    std::vector<std::string> cmd = compile_command(build, root / "labs" / opt.lab / "src" / name);
+                    std::vector<std::string> args{clang_query};
+                    std::string key = "ast\n" + text + "\n" + stamp;
+                    for (const auto& f : forbidden) {
+                        if (f.symbol.rfind("_Z", 0) == 0) continue;  // a mangled name: the object check's business
+                        args.push_back("-c");
+                        args.push_back(ast_matcher(f));
+                        key += "\n" + f.symbol;
+                    }
+                    if (args.size() == 1) break;
+                    args.push_back(name);
+                    args.push_back("--");
+                    for (std::size_t i = 1; i < cmd.size(); ++i) {
+                        const std::string& a = cmd[i];
+                        if ((a == "-o" || a == "-c" || a == "-MT" || a == "-MF") && i + 1 < cmd.size()) {
+                            ++i;
+                            continue;
+                        }
+                        if (a == "-MD" || a == "-MMD" || fs::path(a) == root / "labs" / opt.lab / "src" / name) continue;
+                        args.push_back(a);
+                    }
+                    args.push_back("-Wno-unknown-warning-option");
+                    const fs::path cached = cache / (hex_hash(key) + ".ast");
+                    std::string out;
+                    int rc = 0;
+                    if (fs::exists(cached)) {
+                        out = read_text(cached);
+                    } else {
+                        RunOptions o = sandboxed;
+                        o.sandbox.visible = include_dirs(cmd);
+                        o.memory_mb = std::max<std::size_t>(opt.run.memory_mb, 4096);
+                        o.output_cap = 1 << 20;
+                        o.sandbox.prepare = [&](const fs::path& dir, unsigned uid) {
+                            write_text(dir / name, text);
+                            if (uid) (void)!::chown((dir / name).c_str(), uid, uid);
+                        };
+                        o.sandbox.collect = nullptr;
+                        CommandResult r = run_command(args, opt.compile_timeout_s, o);
+                        out = r.output;
+                        rc = r.exit_code;
+                        if (rc == 0 && out.find(" error: ") == std::string::npos) write_text(cached, out, fs::perms(0600));
+                    }
+                    // clang-query answers each "match" with its matches and then "N match(es)."; a parse error
+                    // means the file could not be checked: fail closed for the tasks the list names.
+                    if (rc != 0 || out.find(" error: ") != std::string::npos) {
+                        notes.push_back("labs/" + opt.lab + "/src/" + name +
+                                        " could not be parsed by clang for the source-level check: it counts as "
+                                        "calling every forbidden function\n" + clip(out, 1500));
+                        for (const auto& f : forbidden) {
+                            ForbiddenCall hit = f;
+                            hit.file = "labs/" + opt.lab + "/src/" + name;
+                            hit.where = "unverifiable source";
+                            hits.push_back(hit);
+                        }
+                        continue;
+                    }
+                    std::istringstream in(out);
+                    std::size_t entry = 0;
+                    std::vector<const ForbiddenCall*> asked;
+                    for (const auto& f : forbidden)
+                        if (f.symbol.rfind("_Z", 0) != 0) asked.push_back(&f);
+                    std::string first_line;
+                    for (std::string line; std::getline(in, line) && entry < asked.size();) {
+                        if (first_line.empty() && line.find(name + ":") == 0) first_line = line.substr(0, line.find(": note"));
+                        const auto m = line.find(" match");
+                        if (m == std::string::npos || line.find_first_not_of("0123456789") != m) continue;
+                        if (std::stoi(line.substr(0, m)) > 0 &&
+                            !exempt_files(graph, forbidden_nodes(graph, *asked[entry])).count(name)) {
+                            ForbiddenCall hit = *asked[entry];
+                            hit.file = "labs/" + opt.lab + "/src/" + name;
+                            hit.where = "in the source" + (first_line.empty() ? std::string() : " (line " +
+                                        first_line.substr(name.size() + 1, first_line.find(':', name.size() + 1) - name.size() - 1) + ")");
+                            hits.push_back(hit);
+                        }
+                        first_line.clear();
+                        ++entry;
+                    }
                 }
             }
-            checks.push_back(check_result("no forbidden calls", found_msgs.empty(), found_msgs));
+            std::vector<std::string> found_msgs;
+            std::set<std::pair<std::string, std::string>> seen;
+            for (const auto& h : hits) {
+                if (!seen.insert({h.symbol, h.file}).second) continue;
+                rep.forbidden.push_back(h);
+                found_msgs.push_back(h.file + " calls " + h.symbol + (h.where.empty() ? "" : " [" + h.where + "]") +
+                                     (h.reason.empty() ? "" : ": " + h.reason) +
+                                     (h.task.empty() ? "" : " (task '" + h.task + "' scores 0)"));
+            }
+            for (const auto& n : notes) found_msgs.push_back(n);
+            checks.push_back(check_result("no forbidden calls", rep.forbidden.empty(), found_msgs));
         }
 
-        // 6. Run every test (hidden included) as the sandbox user.
-        rep.lab = grade_program(opt.lab, "submission", program, sandboxed);
+        // 7. Run every test (hidden included) in the sandbox: it sees the test program, the fixtures and models.
+        RunOptions tests_opt = sandboxed;
+        tests_opt.sandbox.visible = {program, root / "data", geolab::models_dir()};
+        rep.lab = grade_program(opt.lab, "submission", program, tests_opt);
         rep.lab.variant = "submission";
         if (!rep.lab.error.empty()) throw std::runtime_error(rep.lab.error);
         for (const auto& f : rep.forbidden) {
@@ -547,6 +1082,12 @@ SubmissionReport grade_submission(const fs::path& submission, const SubmissionOp
                     r.messages.push_back("scored 0: " + f.file + " calls " + f.symbol + ", which this lab forbids");
                 }
         }
+        if (!rep.rejected.empty())
+            for (auto& r : rep.lab.results)
+                if (r.score > 0) {
+                    r.score = 0;
+                    r.messages.push_back("scored 0: the submission was rejected (" + rep.rejected.front() + ")");
+                }
 
         // 7. Sanitizers (ungraded): the same tests with the student's code built with ASan + UBSan.
         if (opt.asan) {
@@ -565,6 +1106,7 @@ SubmissionReport grade_submission(const fs::path& submission, const SubmissionOp
                 details = clip(e, 4000);
             } else {
                 RunOptions a = sandboxed;
+                a.sandbox.visible = {work / "bin" / ("test_" + opt.lab + "_asan"), root / "data", geolab::models_dir()};
                 a.memory_mb = 0;  // ASan reserves terabytes of address space: no RLIMIT_AS
                 a.timeout_s = opt.run.timeout_s * 3;
                 a.env.push_back("ASAN_OPTIONS=detect_leaks=0:abort_on_error=0:halt_on_error=1");
@@ -587,6 +1129,7 @@ SubmissionReport grade_submission(const fs::path& submission, const SubmissionOp
             checks.push_back(check_result("sanitizers: AddressSanitizer + UBSan (ungraded)", clean, findings, clip(details, 20000)));
         }
         for (auto& c : checks) rep.lab.results.push_back(std::move(c));
+        rep.capped = sandboxed.deadline && Clock::now() >= *sandboxed.deadline;
         rep.status = SubmissionStatus::ok;
     } catch (const std::exception& e) {
         rep.status = SubmissionStatus::grader_error;

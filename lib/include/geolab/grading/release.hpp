@@ -8,6 +8,7 @@
 //! with `throw geolab::NotImplemented(__func__);` at the block's indentation, or with the block's
 //! `// STUB: <code>` lines (uncommented) when it has any. Unterminated, nested or stray markers are errors.
 #include <filesystem>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,12 @@ namespace geolab::grading {
 
 //! The student version of one solution file. \throw std::runtime_error "NAME:LINE: reason" on a bad marker.
 std::string strip_solutions(const std::string& text, const std::string& name);
+
+//! The given files of a lab (code students read but do not write): the basenames listed in
+//! `lab_dir/given.txt`, one per line, '#' comments. The grader always takes them from the course tree, whatever a
+//! submission holds; the generator checks that each has no solution block and that every solutions/ file without
+//! one is listed. Empty when the file does not exist. \throw std::runtime_error "FILE:LINE: reason" on a bad entry.
+std::set<std::string> given_files(const std::filesystem::path& lab_dir);
 
 //! One difference between labs/ and what the generator makes from solutions/.
 struct LabDiff {

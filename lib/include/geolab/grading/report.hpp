@@ -27,6 +27,10 @@ void write_gradescope_json(const std::filesystem::path& file, const std::vector<
 //! JUnit XML: one <testsuite> per lab and variant, one <testcase> per test (failure / error / skipped).
 void write_junit(const std::filesystem::path& file, const std::vector<LabReport>& labs);
 
+//! `s` with every byte that is not part of valid UTF-8 (a stray \xff, a cut sequence, an overlong form, a
+//! surrogate) replaced by U+FFFD: a test may print anything, and JSON and XML readers accept only valid text.
+std::string valid_utf8(const std::string& s);
+
 //! The message of a result as shown to a student: the first message, shortened.
 std::string first_message(const TestResult& r, std::size_t max_chars = 300);
 

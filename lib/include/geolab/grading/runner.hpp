@@ -3,7 +3,10 @@
 //! The grader: runs every test case of a test program in its own child process, with a hard wall-clock timeout
 //! (the whole process group is killed), a memory cap, a file-size cap and an output cap. The child reports its
 //! verdict through a private pipe, prefixed by a per-run random token; the parent alone decides the outcome.
+#include <chrono>
 #include <filesystem>
+#include <optional>
+#include <stdexcept>
 #include <functional>
 #include <string>
 #include <vector>
@@ -42,21 +45,37 @@ struct TestResult {
     double seconds = 0;
 };
 
-//! Extra isolation for untrusted code (grading a submission). Everything here needs root and is skipped
-//! silently where the system refuses it (not root, no namespaces): the per-test supervisor, the time, memory,
-//! output and process limits above work for everyone.
+//! Extra isolation for untrusted code (grading a submission). The uid, the allow-list file system and the
+//! network namespace need root (CAP_SYS_ADMIN); the per-test supervisor, the time, memory, output and process
+//! limits work for everyone. With `require_isolation`, a part that cannot be set up throws SandboxError
+//! (fail closed); without it, that part is skipped and `isolation_problem()` says what is missing.
 struct Sandbox {
     bool drop_privileges = false;  //!< when root: run each test as its own unused uid/gid (see uid_pool_*)
     unsigned uid_pool_first = 61000;  //!< uids leased to running tests, one per running test (flock'ed)
     unsigned uid_pool_size = 512;
+    //! The lease folder: must be a real folder owned by root and writable by root only, or no uid is leased.
+    std::filesystem::path uid_dir = "/tmp/geolab-sandbox-uids";
     std::size_t max_processes = 64;  //!< RLIMIT_NPROC of a test run as its own uid (threads count too)
     bool no_network = true;          //!< unshare(CLONE_NEWNET) in the child (ignored when not permitted)
     std::vector<std::filesystem::path> hide;  //!< folders made empty for the test (tmpfs in a mount namespace)
+    //! The allow-list file system (root only). When true the child runs in a new mount namespace whose root is
+    //! built from nothing: the system's own folders (/usr, /bin, /lib*, a few files of /etc, /dev/null and its
+    //! kind, /proc with other users' processes hidden), `visible` read-only, its working folder read-write, and
+    //! private, empty /tmp, /var/tmp and /dev/shm. Nothing else of the host exists for it.
+    bool allow_list = false;
+    std::vector<std::filesystem::path> visible;  //!< folders or files shown read-only (symbolic links followed)
+    bool clean_env = false;           //!< the child's environment: an allow-list (PATH, LANG, LC_*, TZ) + ours
+    bool require_isolation = false;   //!< fail closed: throw SandboxError when a part cannot be set up
     std::filesystem::path workdir;            //!< the test's working folder (a fresh folder per test under it)
     //! Called with the fresh working folder (already owned by the test's uid) before the child starts, and
     //! after it ended, before the folder is removed: to put inputs in and take outputs out.
     std::function<void(const std::filesystem::path& dir, unsigned uid)> prepare;
     std::function<void(const std::filesystem::path& dir)> collect;
+};
+
+//! The sandbox could not be set up as `Sandbox::require_isolation` demands: nothing untrusted was run.
+struct SandboxError : std::runtime_error {
+    using std::runtime_error::runtime_error;
 };
 
 //! Limits and parallelism of a grading run.
@@ -72,6 +91,9 @@ struct RunOptions {
     //! working folder when sandboxed) and its PNGs are moved here; TestResult::figures names them.
     std::filesystem::path figure_dir;
     std::function<void(const TestResult&, std::size_t done, std::size_t total)> on_result;  //!< progress
+    //! A wall-clock cap shared by every child run with these options (e.g. a whole submission): a child is cut
+    //! at the deadline, and after it nothing more starts (outcome: timed out). Unset: no cap.
+    std::optional<std::chrono::steady_clock::time_point> deadline;
 };
 
 //! What grading one test program produced.
@@ -99,6 +121,10 @@ CommandResult run_command(const std::vector<std::string>& argv, double timeout_s
 
 //! Whether this process can drop privileges for tests (it runs as root).
 bool can_drop_privileges();
+
+//! What of `sb` cannot be set up here, in one sentence (empty: everything it asks for works). Tries it: leases
+//! a uid and runs /bin/true in the full sandbox. Never throws.
+std::string isolation_problem(const Sandbox& sb);
 
 //! The test cases of `program` (runs `program --geolab-list` in a child with the same limits).
 //! \throw std::runtime_error naming the program and the reason if it cannot be listed.

@@ -26,6 +26,12 @@ struct SubmissionOptions {
     bool build_course = true;           //!< first bring test_<lab> of the course build up to date
     double compile_timeout_s = 120;     //!< per student file
     std::filesystem::path forbidden;    //!< the forbidden-calls list (default: labs/<lab>/forbidden.txt)
+    //! Wall-clock cap of the whole submission (compiles, checks, tests): past it nothing more starts and what runs
+    //! is killed; unfinished tests score 0 and the report says so. 0: no cap.
+    double max_seconds = 1200;
+    //! Root only: grade even when the sandbox (own uid, allow-list file system) cannot be set up, with a loud
+    //! "NOT ISOLATED" status. Without it such a grading is refused (fail closed).
+    bool allow_unisolated = false;
     RunOptions run;                     //!< limits of the test runs (the sandbox is filled in by the grader)
 };
 
@@ -39,6 +45,7 @@ struct ForbiddenCall {
     std::string reason;
     std::string file;  //!< the student file that calls it
     std::string task;  //!< the task (test suite) it zeroes; empty: reported only
+    std::string where;  //!< how: the calling function and the way through the student's functions, or "source"
 };
 
 //! Everything grading one submission produced.
@@ -47,9 +54,13 @@ struct SubmissionReport {
     LabReport lab;                      //!< the graded tests, plus the checks (forbidden calls, sanitizers)
     std::vector<std::string> used;      //!< lab files taken from the submission (basename <- path in it)
     std::vector<std::string> stubbed;   //!< lab files the submission lacks: the stub was used
+    std::vector<std::string> given;     //!< given files: always the course's copy
     std::vector<std::string> ignored;   //!< other files of the submission, with the reason
     std::string compiler_output;        //!< the compiler's messages (warnings too), paths as the student knows them
     std::vector<ForbiddenCall> forbidden;
+    std::vector<std::string> rejected;  //!< problems of the student's objects (symbols, sections, syscalls): score 0
+    std::string isolation;  //!< "isolated (...)" or "NOT ISOLATED: reason"
+    bool capped = false;    //!< the wall-clock cap was reached
     std::string error;  //!< for grader_error: what went wrong
     double seconds = 0;
 

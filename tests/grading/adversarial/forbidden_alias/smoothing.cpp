@@ -1,0 +1,33 @@
+// ADVERSARIAL CASE forbidden_alias: smoothing through an alias defined in topology.cpp.
+// Task 5: uniform Laplacian smoothing (handout §7).
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "geolab/halfedge.hpp"
+
+namespace geolab::halfedge {
+
+void ring_alias(const Mesh& mesh, Vertex v, std::vector<Vertex>& out);  // in topology.cpp
+
+void laplacian_smoothing(Mesh& mesh, double t, int iterations) {
+    if (!(t >= 0.0 && t <= 1.0))
+        throw std::invalid_argument("laplacian_smoothing: t = " + std::to_string(t) + " is not in [0, 1]");
+    if (iterations < 0)
+        throw std::invalid_argument("laplacian_smoothing: iterations = " + std::to_string(iterations) + " < 0");
+    std::vector<glm::dvec3> old;
+    std::vector<Vertex> ring;
+    for (int it = 0; it < iterations; ++it) {
+        old = mesh.positions();  // Jacobi: every L(v) reads the positions before this iteration
+        for (Vertex v : mesh.vertices()) {
+            if (mesh.is_boundary(v)) continue;  // boundary and isolated vertices stay put
+            ring_alias(mesh, v, ring);
+            glm::dvec3 mean(0.0);
+            for (Vertex w : ring) mean += old[w.idx];
+            mean /= static_cast<double>(ring.size());
+            mesh.position(v) = old[v.idx] + t * (mean - old[v.idx]);  // v + t·L(v), L(v) = mean − v
+        }
+    }
+}
+
+}  // namespace geolab::halfedge
