@@ -437,6 +437,9 @@ MutateReport run_mutate(const MutateOptions& opt) {
                     write_text(src, file.schema(ids, &spans));
                     CommandResult c = run_plain(recipe.compile_cmd(names[f], src, obj), 1800);
                     if (c.exit_code == 0) break;
+                    // kept for the curious: which sites a schema could not hold, and why
+                    write_text(scratch / "schema" / (stem + ".attempt" + std::to_string(attempt) + ".log"), c.output);
+                    write_text(scratch / "schema" / (stem + ".attempt" + std::to_string(attempt) + ".cpp"), read_text(src));
                     if (ids.empty() || attempt >= 8) {
                         errors[f] = "the reference " + file.file() + " does not compile as a schema:\n" + c.output.substr(0, 4000);
                         break;
@@ -626,8 +629,14 @@ MutateReport run_mutate(const MutateOptions& opt) {
             TestInfo t = tests[i];
             const double limit = t.timeout_s > 0 ? t.timeout_s : o.timeout_s;
             t.timeout_s = std::min(limit, opt.timeout_factor * base[i].seconds + 2.0);
-            const TestResult tr = run_test(prog, t, o);
+            TestResult tr = run_test(prog, t, o);
             ++r.tests_run;
+            if (tr.status == Status::timeout && t.timeout_s < limit) {
+                // Past the short limit: maybe only a busy machine. Decide at the test's own limit, as grading does.
+                t.timeout_s = limit;
+                tr = run_test(prog, t, o);
+                ++r.tests_run;
+            }
             if ((tr.status == Status::passed) == base[i].passed) continue;
             const bool first = r.outcome == Outcome::survived;
             if (first) {

@@ -634,6 +634,9 @@ SourceFile::SourceFile(std::string file, std::string text, const Vocabulary& voc
                     continue;
                 }
                 if ((op == "*") && declaration_like(i)) continue;
+                // "text" + s builds a message: its minus can only be stillborn
+                if ((op == "+" || op == "-") && (kind(i - 1) == TokenKind::string || kind(i + 1) == TokenKind::string))
+                    continue;
                 Site s;
                 s.form = Form::binop;
                 s.tok = s.first = s.last = i;
@@ -805,27 +808,36 @@ template <int Code, class A, class B> decltype(auto) apply(A&& a, B&& b) {
 #undef X
     return;
 }
-template <int Code, int Alt, long K, class A, class B> bool use() {
-    // true when mutant K is selected and its expression is usable here; registers it otherwise
-    if constexpr (!op_valid<Alt, A, B>()) {
-        (void)Stillborn<K>::reported;
-        return false;
-    } else if constexpr (!std::is_same_v<decltype(apply<Code>(std::declval<A>(), std::declval<B>())),
-                                         decltype(apply<Alt>(std::declval<A>(), std::declval<B>()))>) {
-        (void)Rebuild<K>::reported;
-        return false;
-    } else {
-        return on(K);
-    }
+// Whether alternative Alt of Code can replace it for these operands: 0 yes, 1 it does not type-check
+// (stillborn), 2 it has another type (the mutant needs a rebuild of its own).
+template <int Code, int Alt, class A, class B> constexpr int usability() {
+    if constexpr (!op_valid<Alt, A, B>()) return 1;
+    else if constexpr (!std::is_same_v<decltype(apply<Code>(std::declval<A>(), std::declval<B>())),
+                                       decltype(apply<Alt>(std::declval<A>(), std::declval<B>()))>)
+        return 2;
+    else return 0;
 }
 template <int Code> constexpr int alt1() { return Code == 0 ? 1 : Code == 1 ? 0 : Code == 2 ? 3 : Code == 3 ? 2 : Code == 4 ? 5 : Code == 5 ? 4 : Code == 6 ? 7 : Code == 7 ? 6 : Code == 8 ? 9 : 8; }
 template <int Code> constexpr int alt2() { return Code == 0 ? 3 : Code == 1 ? 2 : Code == 2 ? 1 : Code == 3 ? 0 : -1; }
 template <int Code, long K, class A, class B> decltype(auto) eval(BinLeft<A, K, Code>&& l, B&& b) {
-    if (use<Code, alt1<Code>(), K, A, B>())
-        return apply<alt1<Code>()>(std::forward<A>(l.a), std::forward<B>(b));
-    if constexpr (alt2<Code>() >= 0)
-        if (use<Code, alt2<Code>(), K + 1, A, B>())
-            return apply<alt2<Code>()>(std::forward<A>(l.a), std::forward<B>(b));
+    constexpr int u1 = usability<Code, alt1<Code>(), A, B>();
+    if constexpr (u1 == 0) {
+        if (on(K)) return apply<alt1<Code>()>(std::forward<A>(l.a), std::forward<B>(b));
+    } else if constexpr (u1 == 1) {
+        (void)Stillborn<K>::reported;
+    } else {
+        (void)Rebuild<K>::reported;
+    }
+    if constexpr (alt2<Code>() >= 0) {
+        constexpr int u2 = usability<Code, alt2<Code>(), A, B>();
+        if constexpr (u2 == 0) {
+            if (on(K + 1)) return apply<alt2<Code>()>(std::forward<A>(l.a), std::forward<B>(b));
+        } else if constexpr (u2 == 1) {
+            (void)Stillborn<K + 1>::reported;
+        } else {
+            (void)Rebuild<K + 1>::reported;
+        }
+    }
     return apply<Code>(std::forward<A>(l.a), std::forward<B>(b));
 }
 #define X(c, o)                                                                                             \
