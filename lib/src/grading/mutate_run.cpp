@@ -417,9 +417,11 @@ MutateReport run_mutate(const MutateOptions& opt) {
     const BuildRecipe recipe = read_recipe(build, src_dir, names, opt.lab);
     std::set<int> rebuild_ids;
     std::map<std::string, std::set<int>> schema_ids;  // file -> ids compiled into its schema
+    std::map<std::string, std::set<int>> relax_ids;  // file -> ids that need a relaxed schema
     for (const auto& m : todo) {
-        if (m.schema_ok) schema_ids[m.file].insert(m.id);
+        if (m.schema_ok || m.needs_relax) schema_ids[m.file].insert(m.id);
         else rebuild_ids.insert(m.id);
+        if (m.needs_relax) relax_ids[m.file].insert(m.id);
     }
     std::vector<fs::path> schema_objects(files.size());
     {
@@ -430,11 +432,20 @@ MutateReport run_mutate(const MutateOptions& opt) {
             for (std::size_t f; (f = next++) < files.size();) {
                 const SourceFile& file = files[f];
                 std::set<int> ids = schema_ids.at(file.file());
+                const std::set<int>& relaxed = relax_ids[file.file()];
+                bool relax = !relaxed.empty();
                 const std::string stem = fs::path(file.file()).stem().string();
                 const fs::path src = scratch / "schema" / (stem + ".cpp"), obj = scratch / "schema" / (stem + ".o");
                 for (int attempt = 0;; ++attempt) {
+                    if (relax && attempt == 3) {
+                        // constexpr variables are needed as constants after all: their mutants are rebuilt alone
+                        relax = false;
+                        std::lock_guard lock(rebuild_mutex);
+                        for (int id : relaxed)
+                            if (ids.erase(id)) rebuild_ids.insert(id);
+                    }
                     std::vector<SourceFile::Span> spans;
-                    write_text(src, file.schema(ids, &spans));
+                    write_text(src, file.schema(ids, &spans, relax));
                     CommandResult c = run_plain(recipe.compile_cmd(names[f], src, obj), 1800);
                     if (c.exit_code == 0) break;
                     // kept for the curious: which sites a schema could not hold, and why
@@ -451,7 +462,8 @@ MutateReport run_mutate(const MutateOptions& opt) {
                     std::istringstream lines(c.output);
                     std::string line;
                     while (std::getline(lines, line)) {
-                        if (line.find("error") == std::string::npos && line.find("required from") == std::string::npos &&
+                        if (line.find("error") == std::string::npos && line.find("sorry") == std::string::npos &&
+                            line.find("required from") == std::string::npos &&
                             line.find("in 'constexpr' expansion") == std::string::npos && line.find("in constexpr") == std::string::npos)
                             continue;
                         for (std::sregex_iterator it(line.begin(), line.end(), where), end; it != end; ++it) {
@@ -461,6 +473,15 @@ MutateReport run_mutate(const MutateOptions& opt) {
                                 if (s.line != l || !ids.count(s.id)) continue;
                                 on_line.insert(s.id);
                                 if (col >= s.col_first && col <= s.col_last) exact.insert(s.id);
+                            }
+                            if (exact.empty() && on_line.empty()) {
+                                // no site on the error's line (a use of a constant the site defines): the
+                                // nearest line above with sites, within 12 lines
+                                int best = 0;
+                                for (const auto& s : spans)
+                                    if (ids.count(s.id) && s.line <= l && s.line >= l - 12) best = std::max(best, s.line);
+                                for (const auto& s : spans)
+                                    if (ids.count(s.id) && s.line == best) on_line.insert(s.id);
                             }
                             for (int id : exact.empty() ? on_line : exact) bad.insert(id);
                         }
@@ -474,8 +495,11 @@ MutateReport run_mutate(const MutateOptions& opt) {
                 schema_objects[f] = obj;
             }
         };
-        // schema_ids must hold every key before the workers start (no insertion while they run)
-        for (const auto& f : files) schema_ids[f.file()];
+        // the maps must hold every key before the workers start (no insertion while they run)
+        for (const auto& f : files) {
+            schema_ids[f.file()];
+            relax_ids[f.file()];
+        }
         std::vector<std::thread> pool;
         for (int j = 0; j < std::max(1, std::min<int>(opt.jobs, static_cast<int>(files.size()))); ++j) pool.emplace_back(worker);
         for (auto& t : pool) t.join();

@@ -353,6 +353,7 @@ struct TokenInfo {
     bool in_template_args = false;  // between template angle brackets
     bool unevaluated = false;       // inside decltype/sizeof/noexcept/static_assert/alignas/requires/case/enum
     bool constant = false;          // inside a constexpr/consteval declaration or an if constexpr condition
+    bool hard = false;              // constant whatever the schema does (array bound, if constexpr, consteval)
     bool template_open = false, template_close = false;
     std::size_t match = std::string::npos;  // the matching bracket of ( [ { and template < >
 };
@@ -460,11 +461,12 @@ SourceFile::SourceFile(std::string file, std::string text, const Vocabulary& voc
         } else if (t == "constexpr" || t == "consteval" || t == "constinit") {
             if (i > 0 && txt(i - 1) == "if") {
                 if (txt(i + 1) == "(" && info[i + 1].match != std::string::npos)
-                    for (std::size_t j = i + 1; j <= info[i + 1].match; ++j) info[j].constant = true;
+                    for (std::size_t j = i + 1; j <= info[i + 1].match; ++j) info[j].constant = info[j].hard = true;
                 continue;
             }
             // A declaration: to its ';' at depth 0, or to the end of its body when a '{' comes first after a ')'.
             std::size_t j = i + 1;
+            bool function = false;
             for (; j < n; ++j) {
                 const std::string& u = txt(j);
                 if (u == ";") break;
@@ -475,10 +477,67 @@ SourceFile::SourceFile(std::string file, std::string text, const Vocabulary& voc
                 if (u == "{" && info[j].match != std::string::npos) {
                     const bool body = j > 0 && (txt(j - 1) == ")" || txt(j - 1) == "const" || txt(j - 1) == "noexcept");
                     j = info[j].match;
-                    if (body) break;
+                    if (body) {
+                        function = true;
+                        break;
+                    }
                 }
             }
-            for (std::size_t k = i; k <= std::min(j, n - 1); ++k) info[k].constant = true;
+            // A constexpr variable becomes const in a relaxed schema (computed at start-up, so its mutants can
+            // be selected at run time); a constexpr function then runs at run time too. Not so for consteval,
+            // constinit and static members (a static const double member cannot have an initializer).
+            const bool relaxable = t == "constexpr" && !(i > 0 && txt(i - 1) == "static");
+            if (relaxable && !function) relax_tokens_.push_back(i);
+            for (std::size_t k = i; k <= std::min(j, n - 1); ++k) {
+                info[k].constant = true;
+                if (!relaxable) info[k].hard = true;
+            }
+        }
+    }
+
+    // Array bounds in declarations ("double a[3][3]") and default member initializers of classes are constant
+    // expressions (or may be used in one): their sites are rebuilt alone.
+    {
+        std::vector<char> declarator(n, 0);
+        for (std::size_t i = 2; i < n; ++i) {
+            if (txt(i) != "[" || info[i].match == std::string::npos) continue;
+            const bool after_name = kind(i - 1) == TokenKind::identifier && !keywords().count(txt(i - 1)) &&
+                                    (type_words().count(txt(i - 2)) || info[i - 2].template_close || txt(i - 2) == "*" ||
+                                     txt(i - 2) == "&" ||
+                                     (kind(i - 2) == TokenKind::identifier && !keywords().count(txt(i - 2))));
+            const bool next_dim = txt(i - 1) == "]" && info[i - 1].match != std::string::npos && declarator[info[i - 1].match];
+            if (!after_name && !next_dim) continue;
+            declarator[i] = 1;
+            for (std::size_t j = i; j <= info[i].match; ++j) info[j].constant = info[j].hard = true;
+        }
+        for (std::size_t i = 0; i + 1 < n; ++i) {
+            if (txt(i) != "struct" && txt(i) != "class" && txt(i) != "union") continue;
+            std::size_t j = i + 1;
+            while (j < n && txt(j) != "{" && txt(j) != ";" && txt(j) != "(" && txt(j) != ")") ++j;
+            if (j >= n || txt(j) != "{" || info[j].match == std::string::npos) continue;
+            // members at the class body's own depth: from '=' or '{' of a member to its ';'
+            for (std::size_t k = j + 1; k < info[j].match; ++k) {
+                if (txt(k) == "{" && info[k].match != std::string::npos && k > 0 && (txt(k - 1) == ")" || txt(k - 1) == "const")) {
+                    k = info[k].match;  // a member function's body: ordinary code
+                    continue;
+                }
+                if ((txt(k) == "(" || txt(k) == "[") && info[k].match != std::string::npos) {
+                    k = info[k].match;
+                    continue;
+                }
+                if (txt(k) == "=" || (txt(k) == "{" && kind(k - 1) == TokenKind::identifier)) {
+                    std::size_t e = k;
+                    while (e < info[j].match && txt(e) != ";") {
+                        if ((txt(e) == "{" || txt(e) == "(" || txt(e) == "[") && info[e].match != std::string::npos) {
+                            for (std::size_t q = e; q <= info[e].match; ++q) info[q].constant = true;
+                            e = info[e].match;
+                        }
+                        info[e].constant = true;
+                        ++e;
+                    }
+                    k = e;
+                }
+            }
         }
     }
 
@@ -602,6 +661,7 @@ SourceFile::SourceFile(std::string file, std::string text, const Vocabulary& voc
             m.length = tokens_[edit_last].offset + tokens_[edit_last].length - m.offset;
             m.replacement = replacements[k];
             m.schema_ok = schema_ok;
+            m.needs_relax = !schema_ok && info[site.tok].constant && !info[site.tok].hard;
             site.ids.push_back(m.id);
             mutants_.push_back(std::move(m));
         }
@@ -893,7 +953,7 @@ template <long K, class T> std::remove_cvref_t<T> negate_if(T&& x) {
     return text;
 }
 
-std::string SourceFile::schema(const std::set<int>& ids, std::vector<Span>* spans) const {
+std::string SourceFile::schema(const std::set<int>& ids, std::vector<Span>* spans, bool relax) const {
     // The edits of the selected sites, indexed by token.
     struct Wrap {
         std::size_t first, last;
@@ -935,6 +995,8 @@ std::string SourceFile::schema(const std::set<int>& ids, std::vector<Span>* span
                 break;
         }
     }
+    if (relax)
+        for (std::size_t t : relax_tokens_) replace[t] = {"const", {}};
     for (std::size_t w = 0; w < wraps.size(); ++w) wraps_at[wraps[w].first].push_back(w);
     for (std::size_t c = 0; c < choices.size(); ++c) choices_at[choices[c]->first].push_back(c);
     for (auto& v : wraps_at)  // outer (longer) first

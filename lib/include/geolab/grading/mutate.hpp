@@ -43,7 +43,8 @@ struct Mutant {
     std::string original, mutated;  //!< as the report shows them ("(dropped)" for a dropped statement)
     std::size_t offset = 0, length = 0;  //!< the byte range of the file that the mutant replaces ...
     std::string replacement;             //!< ... with this text
-    bool schema_ok = true;  //!< false: known not to work in a schema (constant context); rebuilt alone
+    bool schema_ok = true;     //!< false: in a constant context; rebuilt alone unless ...
+    bool needs_relax = false;  //!< ... only constexpr makes it so: then it works in a relaxed schema
     //! "src/qef.cpp:12:5 | < -> <=": how equivalent-mutants.txt and the log name a mutant.
     std::string key() const;
 };
@@ -79,7 +80,9 @@ public:
     };
     //! The schema of this file: the mutants whose ids are in `ids` selectable at run time (others left out).
     //! `spans` (optional) receives where each mutant's text went, to map compiler errors back to mutants.
-    std::string schema(const std::set<int>& ids, std::vector<Span>* spans = nullptr) const;
+    //! `relax`: constexpr variables become const (initialised at start-up), so that the mutants of constexpr
+    //! code (tables built at compile time) can be selected at run time too.
+    std::string schema(const std::set<int>& ids, std::vector<Span>* spans = nullptr, bool relax = false) const;
 
     // One mutation site: how its mutants are written into the schema.
     //! One mutation site (internal): how its mutants are written into the schema.
@@ -104,6 +107,7 @@ private:
     std::vector<Token> tokens_;  // code tokens only (no comments or preprocessor lines)
     std::vector<Mutant> mutants_;
     std::vector<Site> sites_;
+    std::vector<std::size_t> relax_tokens_;  // the `constexpr` of variables (written `const` in a relaxed schema)
 };
 
 //! The run-time half of the schema (namespace geolab_mutant_rt), put at the top of every schema file.
