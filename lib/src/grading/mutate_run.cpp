@@ -538,12 +538,22 @@ MutateReport run_mutate(const MutateOptions& opt) {
     const auto t_base = Clock::now();
     const std::vector<TestInfo> tests = list_tests(program, run);
     std::vector<Baseline> base(tests.size());
+    std::vector<std::set<int>> covers(tests.size());  // per test: the mutants whose site it reaches
+    fs::remove_all(scratch / "coverage");
+    fs::create_directories(scratch / "coverage");
     {
         std::atomic<std::size_t> next{0};
         auto worker = [&] {
             for (std::size_t i; (i = next++) < tests.size();) {
-                const TestResult r = run_test(program, tests[i], run);
+                RunOptions o = run;
+                const fs::path cov = scratch / "coverage" / (std::to_string(i) + ".txt");
+                o.env.push_back("GEOLAB_MUTANT_COVERAGE=" + cov.string());
+                const TestResult r = run_test(program, tests[i], o);
                 base[i] = {tests[i], r.status == Status::passed, r.status, r.seconds};
+                if (fs::exists(cov)) {
+                    std::istringstream in(read_text(cov));
+                    for (int id; in >> id;) covers[i].insert(id);
+                }
             }
         };
         std::vector<std::thread> pool;
@@ -648,7 +658,12 @@ MutateReport run_mutate(const MutateOptions& opt) {
                 order.insert(order.begin(), k->second);
             }
         }
+        // A mutant of the schema is run only against the tests that reach its site (the baseline's coverage).
+        if (r.mode == "schema")
+            order.erase(std::remove_if(order.begin(), order.end(), [&](std::size_t i) { return !covers[i].count(m.id); }),
+                        order.end());
         r.outcome = Outcome::survived;
+        if (order.empty()) r.detail = "no test reaches this code";
         for (std::size_t i : order) {
             TestInfo t = tests[i];
             const double limit = t.timeout_s > 0 ? t.timeout_s : o.timeout_s;
@@ -748,7 +763,8 @@ std::string format_report(const MutateReport& rep) {
     if (survived) {
         os << "survivors (file:line:col | original -> mutated): add a test that kills each, or mark it equivalent\n";
         for (const auto& r : rep.results)
-            if (r.outcome == Outcome::survived) os << "  " << r.mutant.key() << "\n";
+            if (r.outcome == Outcome::survived)
+                os << "  " << r.mutant.key() << (r.detail.empty() ? "" : "   [" + r.detail + "]") << "\n";
     }
     if (equiv) {
         os << "equivalent (reviewed):\n";

@@ -823,9 +823,12 @@ std::string SourceFile::apply(const Mutant& m) const {
 
 const std::string& schema_preamble() {
     static const std::string text = R"PRE(// geolab mutate: the mutant schema runtime (generated; see grading/mutate.hpp).
+#include <atomic>
 #include <cstdio>
 #include <cstdlib>
 #include <type_traits>
+#include <fcntl.h>
+#include <unistd.h>
 #include <utility>
 namespace geolab_mutant_rt {
 // The selected mutant (GEOLAB_MUTANT), read once; -1: none.
@@ -836,7 +839,26 @@ inline long selected() {
     }();
     return id;
 }
-inline bool on(long k) { return selected() == k; }
+// Coverage (GEOLAB_MUTANT_COVERAGE=file): every site reached appends its first mutant's id to the file, once.
+// A test that never reaches a site cannot kill its mutants, so they are not run against it.
+inline int coverage_fd() {
+    static const int fd = [] {
+        const char* p = std::getenv("GEOLAB_MUTANT_COVERAGE");
+        return p && *p ? ::open(p, O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644) : -1;
+    }();
+    return fd;
+}
+inline void reached(long k) {
+    static std::atomic<unsigned char> seen[1 << 16];
+    if (k < 0 || k >= (1 << 16) || seen[k].exchange(1)) return;
+    char buf[32];
+    const int n = std::snprintf(buf, sizeof buf, "%ld\n", k);
+    (void)!::write(coverage_fd(), buf, static_cast<std::size_t>(n));
+}
+inline bool on(long k) {
+    if (coverage_fd() >= 0) reached(k);
+    return selected() == k;
+}
 // A mutant whose mutated expression does not type-check (stillborn), or has another type than the original
 // (it needs a rebuild of its own): written at start-up to GEOLAB_MUTANT_REPORT, so the tool learns them.
 inline bool report(long k, const char* what) {
