@@ -49,6 +49,7 @@ int main(int argc, char** argv) {
     geolab::cli::add_info(app, status);
     geolab::cli::add_contour(app, status);
     geolab::cli::add_table1(app, status);
+    geolab::cli::add_mutate(app, status);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
