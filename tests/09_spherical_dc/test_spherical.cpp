@@ -399,6 +399,64 @@ TEST_CASE("dual_contour_spherical: vertical_projection also closes; none leaves 
     CHECK(v.n_faces() - n.n_faces() == r.boundary);  // one fan triangle per boundary edge
 }
 
+TEST_CASE("fill_poles: a ring of 2 vertices is already closed: no ghost and no fan (level 1 stays a closed manifold)" *
+          geolab::points(1) *
+          geolab::hint("At level 1 there are 2 phi cells: the ring around an axis edge has 2 vertices, and the 'hole' "
+                       "is bounded twice by the one edge {ring[0], ring[1]}, which two faces already share. A fan "
+                       "(ghost, r0, r1), (ghost, r1, r0) would put that edge into 4 faces. Rings of fewer than 3 "
+                       "vertices get no ghost. Handout §8.")) {
+    // the whole pipeline at level 1: 2 rings of 2 vertices each, closed with any fill
+    const std::pair<FieldPtr, const char*> shapes[] = {
+        {geolab::sphere({0.05, -0.02, 0.03}, 0.8), "sphere r = 0.8 at (0.05, -0.02, 0.03)"},
+        {geolab::sphere({-0.1, 0.15, -0.05}, 0.6), "sphere r = 0.6 at (-0.1, 0.15, -0.05)"}};
+    for (const auto& [f, name_c] : shapes) {
+        const std::string name(name_c);
+        std::size_t faces_none = 0;
+        for (auto method : {PoleFill::none, PoleFill::normal_projection, PoleFill::vertical_projection}) {
+            DcStats st;
+            const PolygonSoup s = spherical(*f, 1, method, &st);
+            INFO(name << ", level 1, fill " << int(method) << ": " << st.pole_rings << " rings, " << st.ghost_vertices
+                      << " ghosts");
+            LAB09_CHECK_CLOSED_MANIFOLD(s, name);
+            CHECK(st.pole_rings == 2);
+            CHECK(st.ghost_vertices == 0);
+            CHECK(st.pole_fill.n_faces == 0);
+            if (method == PoleFill::none) faces_none = s.n_faces();
+            else CHECK(s.n_faces() == faces_none);
+        }
+    }
+    // hand-built rings of 1, 2 and 3 vertices: only the third is filled
+    const glm::dvec3 o(0.1, 0.0, -0.2);
+    const FieldPtr f = geolab::sphere(o, 1.0);
+    PolygonSoup soup;
+    std::vector<PoleRing> rings;
+    for (int size : {1, 2, 3}) {
+        PoleRing pr;
+        pr.north = size != 2;
+        pr.r_lo = 0.5;
+        pr.r_hi = 1.5;
+        for (int i = 0; i < size; ++i) {
+            const double phi = 2 * kPi * i / size;
+            pr.ring.push_back(std::uint32_t(soup.positions.size()));
+            soup.positions.push_back(o + glm::dvec3(0.3 * std::cos(phi), 0.3 * std::sin(phi), pr.north ? 0.95 : -0.95));
+        }
+        rings.push_back(pr);
+    }
+    for (auto method : {PoleFill::normal_projection, PoleFill::vertical_projection}) {
+        PolygonSoup out = soup;
+        const PoleFillResult r = fill_poles(out, rings, *f, o, method);
+        INFO("rings of 1, 2 and 3 vertices, fill " << int(method) << ": " << r.ghost_vertices.size() << " ghosts, "
+                                                   << r.n_faces << " faces, " << r.ring_vertices.size()
+                                                   << " ring vertices listed");
+        REQUIRE(r.ghost_vertices.size() == 1);
+        CHECK(r.n_faces == 3);
+        CHECK(out.n_faces() == 3);
+        CHECK(out.n_vertices() == soup.n_vertices() + 1);
+        CHECK(r.ring_vertices == rings[2].ring);
+        CHECK(r.ghost_vertices[0] == soup.n_vertices());
+    }
+}
+
 TEST_CASE("fill_poles: hand-built rings get the ghost where the tangent planes meet; clamped; fans outward" *
           geolab::points(2) *
           geolab::hint("normal_projection: s* = sum (n.a)(n.(v - o)) / sum (n.a)^2 with n = grad f / |grad f| at each "
