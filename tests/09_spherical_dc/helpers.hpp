@@ -339,6 +339,25 @@ public:
     glm::dvec3 lo_, hi_;
 };
 
+// A sphere a few finest cells wide at level 10 inside large bounds ([-1, 1]^3): the octrees refine only around it,
+// so max_level = 10 (the largest allowed) stays small and fast.
+class TinySphere final : public ScalarField {
+public:
+    TinySphere(glm::dvec3 c, double r) : c_(c), r_(r) {}
+    double value(const glm::dvec3& p) const override { return glm::length(p - c_) - r_; }
+    glm::dvec3 gradient(const glm::dvec3& p) const override {
+        const glm::dvec3 d = p - c_;
+        const double len = glm::length(d);
+        return len > 0 ? d / len : glm::dvec3(0.0);
+    }
+    Box bounds() const override { return {glm::dvec3(-1.0), glm::dvec3(1.0)}; }
+    double lipschitz() const override { return 1.0; }
+
+private:
+    glm::dvec3 c_;
+    double r_;
+};
+
 // The plane z = z0 (value exact), but with gradients that swing around wildly (∇f is NOT the plane's normal):
 // the QEF planes then meet far away, so unclamped minimisers leave their cells.
 class WobblyPlane final : public ScalarField {

@@ -130,11 +130,27 @@ TEST_CASE("build_octree: a mesh with a hole (its sign jumps across the hole): ev
     }
 }
 
-TEST_CASE("build_octree: max_level outside 1..10 throws std::invalid_argument" * geolab::points(1) *
-          geolab::hint("Check the level first (Octree::init_cartesian does it too). Handout §4.1.")) {
+TEST_CASE("build_octree: max_level outside 1..10 throws std::invalid_argument; 1 and 10 are accepted" *
+          geolab::points(1) *
+          geolab::hint("Check the level first (Octree::init_cartesian does it too): 1 <= max_level <= 10, both ends "
+                       "included. Handout §4.1.")) {
     const FieldPtr f = geolab::sphere({0, 0, 0}, 0.5);
     const Octree ok = build_octree(*f, params(3));
     REQUIRE(ok.nodes.size() > 1);
+    const Octree one = build_octree(*f, params(1));
+    CHECK(one.max_level == 1);
+    CHECK(tree_shape(one).leaves.size() == 8);
+    // level 10 around a sphere of radius 0.004 (about 2 finest cells) inside the bounds [-1, 1]^3
+    const TinySphere tiny({0.3, -0.2, 0.1}, 0.004);
+    Octree ten;
+    CHECK_NOTHROW(ten = build_octree(tiny, params(10)));
+    INFO("tiny sphere, level 10: " << ten.nodes.size() << " nodes, max_level " << ten.max_level);
+    CHECK(ten.max_level == 10);
+    REQUIRE(ten.nodes.size() > 1);
+    const std::uint32_t leaf = leaf_at(ten, {0.3, -0.2, 0.104});
+    REQUIRE(leaf != invalid_index);
+    CHECK(int(ten.nodes[leaf].level) == 10);
+    CHECK(tree_shape(ten).deeper_than_max == 0);
     CHECK_THROWS_AS(build_octree(*f, params(0)), std::invalid_argument);
     CHECK_THROWS_AS(build_octree(*f, params(11)), std::invalid_argument);
     CHECK_THROWS_AS(build_octree(*f, params(-2)), std::invalid_argument);

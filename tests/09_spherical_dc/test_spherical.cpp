@@ -17,6 +17,19 @@ double unit_of(const ScalarField& f, int level) {
     const glm::dvec3 e = b.hi - b.lo;
     return std::max({e.x, e.y, e.z}) / double(1 << level);
 }
+// Nodes reachable from the root (the given data structure only).
+std::size_t reachable(const Octree& t) {
+    std::size_t n = 0;
+    std::vector<std::uint32_t> stack{0};
+    while (!stack.empty()) {
+        const std::uint32_t i = stack.back();
+        stack.pop_back();
+        ++n;
+        if (!t.nodes[i].is_leaf())
+            for (int k = 0; k < 8; ++k) stack.push_back(t.nodes[i].first_child + k);
+    }
+    return n;
+}
 // The parameter box of a node: r, theta, phi intervals.
 struct ParamBox {
     double r0, r1, t0, t1, p0, p1;
@@ -322,9 +335,76 @@ TEST_CASE("dual_contour_spherical: a sphere needs fewer vertices than on the Car
     }
 }
 
+TEST_CASE("dual_contour_spherical: surfaces crossing the first shells above the origin or r_min are closed; DcStats" *
+          geolab::points(1) *
+          geolab::hint("Only edges ON the inner sphere (r index 0) have no cells below them: skip those, and nothing "
+                       "at r index 1 or above. DcStats: cells = reachable nodes, leaves = reachable leaves of the tree "
+                       "that was contoured; crossings = what place_vertices returned. Handout §7.")) {
+    struct Case {
+        glm::dvec3 centre;
+        double radius, r_min, r_max;
+        int level;
+        const char* what;
+    } cases[] = {
+        {{0.03, 0.02, 0.04}, 0.1, 0.0, 1.0, 4, "sphere around the origin, r from 0.046 to 0.154 (shell 1 at 0.0625)"},
+        {{0.08, 0.0, 0.02}, 0.06, 0.0, 1.0, 4, "sphere beside the origin, r from 0.022 to 0.142 (shell 1 at 0.0625)"},
+        {{0.01, 0.012, -0.008}, 0.04, 0.0, 1.0, 5, "sphere around the origin, r from 0.022 to 0.058 (shell 1 at 0.031)"},
+        {{0.02, -0.01, 0.015}, 0.54, 0.5, 1.0, 4, "r_min 0.5: sphere r from 0.513 to 0.567 (shell 1 at 0.531)"},
+        {{0.02, -0.01, 0.015}, 0.54, 0.5, 1.0, 5, "r_min 0.5: sphere r from 0.513 to 0.567 (shell 1 at 0.516)"},
+    };
+    for (const Case& cs : cases) {
+        const FieldPtr f = geolab::sphere(cs.centre, cs.radius);
+        SphericalParams p;
+        p.max_level = cs.level;
+        p.origin = glm::dvec3(0.0);
+        p.correct_origin = false;
+        p.r_min = cs.r_min;
+        p.r_max = cs.r_max;
+        DcStats st;
+        const PolygonSoup s = dual_contour_spherical(*f, p, &st);
+        const std::string label = std::string(cs.what) + ", origin 0, shell [" + std::to_string(cs.r_min) + ", " +
+                                  std::to_string(cs.r_max) + "], level " + std::to_string(cs.level);
+        INFO(label);
+        // the test's own check that the surface really crosses shell 1 (some lattice point inside, some outside)
+        const double shell1 = cs.r_min + (cs.r_max - cs.r_min) / (1 << cs.level);
+        int in = 0, out = 0;
+        for (int i = 0; i < 64; ++i)
+            for (int j = 0; j <= 16; ++j) {
+                const double v = f->value(cart_of(shell1, kPi * j / 16, 2 * kPi * i / 64));
+                (v <= 0 ? in : out) += 1;
+            }
+        REQUIRE(in > 0);
+        REQUIRE(out > 0);
+        LAB09_CHECK_CLOSED_MANIFOLD(s, label);
+        CHECK(components(s) == 1);
+        CHECK(edge_report(s).euler() == 2);
+        CHECK(enclosed_volume(s) > 0);
+        // DcStats against the same chain run step by step
+        Octree t = build_spherical_octree(*f, cs.level, st.origin, st.r_min, st.r_max);
+        const std::size_t crossings = place_vertices(t, {p.tau, p.crossing_tolerance});
+        std::vector<PoleRing> rings;
+        const PolygonSoup s2 = contour(t, &rings);
+        INFO("DcStats: cells " << st.cells << ", leaves " << st.leaves << ", samples " << st.samples << ", crossings "
+                               << st.crossings << ", rings " << st.pole_rings << "; the tree: " << reachable(t)
+                               << " nodes, " << tree_shape(t).leaves.size() << " leaves, " << t.samples()
+                               << " samples, " << crossings << " crossings, " << rings.size() << " rings");
+        CHECK(st.origin == glm::dvec3(0.0));
+        CHECK(st.r_min == cs.r_min);
+        CHECK(st.r_max == cs.r_max);
+        CHECK(st.cells == reachable(t));
+        CHECK(st.leaves == tree_shape(t).leaves.size());
+        CHECK(st.samples == t.samples());
+        CHECK(st.crossings == crossings);
+        CHECK(st.pole_rings == rings.size());
+        CHECK(st.vertices == s.n_vertices());
+        CHECK(st.faces == s.n_faces());
+        CHECK(s.n_faces() == s2.n_faces() + st.pole_fill.n_faces);
+    }
+}
+
 TEST_CASE("build_spherical_octree and dual_contour_spherical: bad parameters throw std::invalid_argument" *
           geolab::points(1) *
-          geolab::hint("max_level in [1, 10], 0 <= r_min < r_max. Handout §7.1.")) {
+          geolab::hint("max_level in [1, 10] (both ends accepted), 0 <= r_min < r_max. Handout §7.1.")) {
     const FieldPtr f = geolab::sphere({0, 0, 0}, 0.5);
     const Octree ok = build_spherical_octree(*f, 3, glm::dvec3(0.0), 0.0, 1.0);
     REQUIRE(ok.nodes.size() > 1);
@@ -338,6 +418,28 @@ TEST_CASE("build_spherical_octree and dual_contour_spherical: bad parameters thr
     REQUIRE(dual_contour_spherical(*f, p).n_faces() > 0);
     p.max_level = 11;
     CHECK_THROWS_AS(dual_contour_spherical(*f, p), std::invalid_argument);
+    p.max_level = 0;
+    CHECK_THROWS_AS(dual_contour_spherical(*f, p), std::invalid_argument);
+    // 1 and 10 are accepted (level 10 around a sphere of radius 0.01 away from the origin: a small tree)
+    const TinySphere tiny({0.3, -0.2, 0.1}, 0.01);
+    Octree ten;
+    CHECK_NOTHROW(ten = build_spherical_octree(tiny, 10, glm::dvec3(0.0), 0.0, 1.0));
+    CHECK(ten.max_level == 10);
+    const std::uint32_t leaf = leaf_at(ten, {0.3, -0.2, 0.11});
+    REQUIRE(leaf != invalid_index);
+    CHECK(int(ten.nodes[leaf].level) == 10);
+    for (int level : {1, 10}) {
+        SphericalParams q;
+        q.max_level = level;
+        q.origin = glm::dvec3(0.0);
+        q.correct_origin = false;
+        q.r_max = 1.0;
+        PolygonSoup s;
+        CHECK_NOTHROW(s = dual_contour_spherical(level == 1 ? *f : static_cast<const ScalarField&>(tiny), q));
+        INFO("level " << level << ": " << describe(edge_report(s)));
+        CHECK(s.n_faces() > 0);
+        if (level == 10) LAB09_CHECK_CLOSED_MANIFOLD(s, "tiny sphere r = 0.01 at (0.3, -0.2, 0.1), level 10");
+    }
     p.max_level = 3;
     p.r_min = 2.0;
     p.r_max = 1.0;
