@@ -40,6 +40,44 @@ ParamBox param_box(const Octree& t, const OctreeNode& nd) {
     return {t.r_min + dr * nd.x * s / n,       t.r_min + dr * (nd.x + 1) * s / n, kPi * nd.y * s / n,
             kPi * (nd.y + 1) * s / n,          2 * kPi * nd.z * s / n,            2 * kPi * (nd.z + 1) * s / n};
 }
+// CHECK every reachable node of a spherical tree against the ball rule with the constant lf: split iff
+// |f(c)| <= lf * R (the root always split, finest leaves not tested); and that the leaves tile the parameter box.
+void check_ball_rule(const Octree& t, const ScalarField& f, double lf) {
+    const int L = t.max_level;
+    const glm::dvec3 origin = t.origin;
+    double cells = 0;  // parameter volume in finest cells
+    std::size_t too_coarse = 0, too_fine = 0;
+    std::ostringstream first;
+    std::vector<std::uint32_t> stack{0};
+    while (!stack.empty()) {
+        const std::uint32_t n = stack.back();
+        stack.pop_back();
+        const OctreeNode& nd = t.nodes[n];
+        if (nd.is_leaf()) cells += std::pow(double(t.cell_span(nd.level)), 3);
+        else
+            for (int k = 0; k < 8; ++k) stack.push_back(nd.first_child + k);
+        if (nd.level == 0 || (nd.is_leaf() && nd.level == L)) continue;
+        const ParamBox b = param_box(t, nd);
+        const double rc = 0.5 * (b.r0 + b.r1), tc = 0.5 * (b.t0 + b.t1), pc = 0.5 * (b.p0 + b.p1);
+        const glm::dvec3 uc = cart_of(1.0, tc, pc);
+        double cos_g = 1.0;
+        for (double th : {b.t0, b.t1})
+            for (double ph : {b.p0, b.p1}) cos_g = std::min(cos_g, glm::dot(uc, cart_of(1.0, th, ph)));
+        double R = 0;
+        for (double r : {b.r0, b.r1}) R = std::max(R, std::sqrt(std::max(0.0, r * r + rc * rc - 2 * r * rc * cos_g)));
+        const double v = std::abs(f.value(origin + rc * uc)), bound = lf * R;
+        if (nd.is_leaf() && v <= bound * (1 - 1e-9) && too_coarse++ < 3)
+            first << "\n  leaf level " << int(nd.level) << " (" << nd.x << ", " << nd.y << ", " << nd.z
+                  << ") not split: |f(c)| = " << v << " <= Lf R = " << bound;
+        if (!nd.is_leaf() && v > bound * (1 + 1e-9) && too_fine++ < 3)
+            first << "\n  node level " << int(nd.level) << " (" << nd.x << ", " << nd.y << ", " << nd.z
+                  << ") split although |f(c)| = " << v << " > Lf R = " << bound;
+    }
+    INFO("Lipschitz constant used by the test: " << lf);
+    CHECK_MESSAGE(too_coarse == 0, too_coarse << " leaves should have been split" << first.str());
+    CHECK_MESSAGE(too_fine == 0, too_fine << " nodes should not have been split" << first.str());
+    CHECK(cells == std::pow(double(t.resolution()), 3));
+}
 }  // namespace
 
 TEST_SUITE("Task 10: spherical octree") {
@@ -65,37 +103,38 @@ TEST_CASE("build_spherical_octree: cells halve r; theta and phi; refinement foll
     CHECK(!t.nodes[0].is_leaf());
     CHECK(shape.bad_children == 0);
     CHECK(shape.deeper_than_max == 0);
-    double cells = 0;  // parameter volume in finest cells
-    std::size_t too_coarse = 0, too_fine = 0;
-    std::ostringstream first;
-    std::vector<std::uint32_t> stack{0};
-    while (!stack.empty()) {
-        const std::uint32_t n = stack.back();
-        stack.pop_back();
-        const OctreeNode& nd = t.nodes[n];
-        if (nd.is_leaf()) cells += std::pow(double(t.cell_span(nd.level)), 3);
-        else
-            for (int k = 0; k < 8; ++k) stack.push_back(nd.first_child + k);
-        if (nd.level == 0 || (nd.is_leaf() && nd.level == L)) continue;
-        const ParamBox b = param_box(t, nd);
-        const double rc = 0.5 * (b.r0 + b.r1), tc = 0.5 * (b.t0 + b.t1), pc = 0.5 * (b.p0 + b.p1);
-        const glm::dvec3 uc = cart_of(1.0, tc, pc);
-        double cos_g = 1.0;
-        for (double th : {b.t0, b.t1})
-            for (double ph : {b.p0, b.p1}) cos_g = std::min(cos_g, glm::dot(uc, cart_of(1.0, th, ph)));
-        double R = 0;
-        for (double r : {b.r0, b.r1}) R = std::max(R, std::sqrt(std::max(0.0, r * r + rc * rc - 2 * r * rc * cos_g)));
-        const double v = std::abs(f->value(origin + rc * uc)), bound = f->lipschitz() * R;
-        if (nd.is_leaf() && v <= bound * (1 - 1e-9) && too_coarse++ < 3)
-            first << "\n  leaf level " << int(nd.level) << " (" << nd.x << ", " << nd.y << ", " << nd.z
-                  << ") not split: |f(c)| = " << v << " <= Lf R = " << bound;
-        if (!nd.is_leaf() && v > bound * (1 + 1e-9) && too_fine++ < 3)
-            first << "\n  node level " << int(nd.level) << " (" << nd.x << ", " << nd.y << ", " << nd.z
-                  << ") split although |f(c)| = " << v << " > Lf R = " << bound;
+    check_ball_rule(t, *f, f->lipschitz());
+}
+
+TEST_CASE("build_spherical_octree: lipschitz() == 0: Lf = 2 max |grad f| on the 9^3 lattice of the shell's cube" *
+          geolab::points(1) *
+          geolab::hint("Without a Lipschitz constant estimate Lf once: 2 x the largest |grad f| at the 9^3 points "
+                       "origin + r_max (i/4 - 1, j/4 - 1, k/4 - 1), i, j, k = 0..8 (the cube around the shell), then "
+                       "apply the ball rule with it. Handout §2 and §7.")) {
+    struct Case {
+        glm::dvec3 centre, origin;
+        double radius, r_max;
+        int level;
+    } cases[] = {{{0.2, -0.1, 0.05}, {0.0, 0.05, 0.0}, 0.6, 1.2, 4},
+                 {{-0.3, 0.2, 0.1}, {-0.1, 0.0, 0.02}, 0.5, 1.0, 5},
+                 {{0.05, 0.0, -0.1}, {0.0, 0.0, 0.0}, 0.7, 1.5, 4}};
+    for (const Case& cs : cases) {
+        const QuadraticBall f(cs.centre, cs.radius);
+        REQUIRE(f.lipschitz() == 0.0);
+        const Octree t = build_spherical_octree(f, cs.level, cs.origin, 0.0, cs.r_max);
+        REQUIRE(t.nodes.size() > 1);
+        const double lf = f.estimate(cs.origin - cs.r_max, 2.0 * cs.r_max);
+        INFO("f = |p - c|^2 - R^2 (no Lipschitz constant), c = " << str(cs.centre) << ", R = " << cs.radius
+                                                                  << ", origin " << str(cs.origin) << ", shell [0, "
+                                                                  << cs.r_max << "], level " << cs.level
+                                                                  << ": expected Lf = " << lf);
+        check_ball_rule(t, f, lf);
     }
-    CHECK_MESSAGE(too_coarse == 0, too_coarse << " leaves should have been split" << first.str());
-    CHECK_MESSAGE(too_fine == 0, too_fine << " nodes should not have been split" << first.str());
-    CHECK(cells == std::pow(double(t.resolution()), 3));
+    // a signed distance without a constant: |grad f| = 1 everywhere, Lf = 2
+    const NoLipschitz g(geolab::sphere({0.1, 0.0, -0.1}, 0.7));
+    const Octree u = build_spherical_octree(g, 4, glm::dvec3(0.0), 0.0, 1.2);
+    INFO("sphere distance without lipschitz(), level 4: expected Lf = 2");
+    check_ball_rule(u, g, 2.0);
 }
 
 TEST_CASE("build_spherical_octree: every finest cell the surface passes through is a leaf at max level" *
