@@ -163,6 +163,60 @@ TEST_CASE("correct_origin: moves to the nearer side along the gradient; stops at
     CHECK(path[0] == far);
 }
 
+TEST_CASE("correct_origin: where grad f vanishes, the step goes to the best of the 6 axis probes at delta * unit" *
+          geolab::points(1) *
+          geolab::hint("|grad f| < 1e-12: probe x +- delta * unit * e for the 6 axis directions e and step to the probe "
+                       "with the largest s * f (s = the side we move to). The probe distance matters: a field can grow "
+                       "fastest along one axis near x and along another farther away. Handout §6.")) {
+    // f = s0 (c + A max(x, 0)^4 + B max(y, 0)^2 + g z): zero value gradient at the origin when g = 0. +X wins
+    // beyond d* = sqrt(B / A) = 0.05 and +Y below it; every other probe gives c.
+    struct Probe final : ScalarField {
+        double sign = 1.0, g = 0.0;
+        double value(const glm::dvec3& p) const override {
+            const double x = std::max(p.x, 0.0), y = std::max(p.y, 0.0);
+            return sign * (0.01 + x * x * x * x + 0.0025 * y * y + g * p.z);
+        }
+        glm::dvec3 gradient(const glm::dvec3& p) const override {
+            const double x = std::max(p.x, 0.0), y = std::max(p.y, 0.0);
+            return sign * glm::dvec3(4.0 * x * x * x, 0.005 * y, g);
+        }
+        Box bounds() const override { return {glm::dvec3(-1.0), glm::dvec3(1.0)}; }
+    };
+    int checked = 0;
+    for (double sign : {1.0, -1.0})
+        for (double g : {0.0, 1e-13, 1e-11})
+            for (double step : {0.035, 0.07}) {
+                Probe f;
+                f.sign = sign;
+                f.g = g;
+                OriginParams op;
+                op.unit = step / op.delta;
+                const glm::dvec3 x0(0.0);
+                const auto path = correct_origin(f, x0, op);
+                // the expected first position: the best probe (|grad f| < 1e-12), or one step along s grad f
+                glm::dvec3 want(0.0, 0.0, step * (g > 0 ? 1.0 : 0.0));
+                const char* rule = "one step along s * grad f / |grad f|";
+                if (glm::length(f.gradient(x0)) < 1e-12) {
+                    rule = "the axis probe with the largest s * f";
+                    double best = -1e300;
+                    for (int a = 0; a < 3; ++a)
+                        for (double e : {1.0, -1.0}) {
+                            glm::dvec3 q(0.0);
+                            q[a] = e * step;
+                            if (sign * f.value(q) > best) best = sign * f.value(q), want = q;
+                        }
+                }
+                INFO("f = " << (sign > 0 ? "" : "-") << "(0.01 + max(x,0)^4 + 0.0025 max(y,0)^2 + " << g
+                            << " z) from the origin, delta * unit = " << step << ": expected " << rule << " "
+                            << str(want) << ", got " << (path.size() > 1 ? str(path[1]) : std::string("no step")));
+                REQUIRE(path.size() >= 2);
+                CHECK(path[0] == x0);
+                CHECK(glm::length(path[1] - want) < 1e-12);
+                ++checked;
+            }
+    CHECK(checked == 12);
+}
+
 TEST_CASE("correct_origin: unit <= 0 throws std::invalid_argument" * geolab::points(1) *
           geolab::hint("dual_contour_spherical fills unit in; a direct call must pass a positive length.")) {
     const FieldPtr f = geolab::sphere({0, 0, 0}, 1.0);
