@@ -255,6 +255,63 @@ TEST_CASE("contour hidden: an adaptive tree (leaves of several levels) gives a c
     }
 }
 
+TEST_CASE("contour hidden: a spherical tree with leaves of levels 3 to 5 around the surface is closed and oriented" *
+          geolab::points(2) * geolab::hidden() *
+          geolab::hint("Spherical trees can be adaptive too: coarse leaves at a sign change get a vertex (their own "
+                       "edges' crossings), and around a minimal edge the quadrant leaves may be coarser: drop repeats "
+                       "(a triangle), emit from a leaf no finer one subdivides, wrap phi at the seam. Pole rings may "
+                       "mix levels as well.")) {
+    struct Case {
+        FieldPtr f;
+        glm::dvec3 origin;
+        double r_max;
+        const char* what;
+    };
+    const Case cases[] = {
+        {geolab::sphere({0.05, -0.03, 0.02}, 0.6), {0.0, 0.0, 0.0}, 1.0, "sphere r = 0.6 about (0.05, -0.03, 0.02)"},
+        {geolab::named_implicit("blob"), {0.0, 0.0, 0.0}, 1.6, "blob"},
+        {geolab::torus({0.0, 0.0, 0.05}, 0.55, 0.22), {0.0, 0.0, 0.0}, 1.0, "torus R = 0.55, r = 0.22"}};
+    for (const Case& cs : cases) {
+        // the tree by hand (the given Octree API): every cell to level 3; then cells in phi [0, pi) to level 5 and
+        // cells in phi [pi, 3pi/2) to level 4
+        const int L = 5;
+        Octree t;
+        t.init_spherical(*cs.f, L, cs.origin, 0.0, cs.r_max);
+        for (std::uint32_t n = 0; n < t.nodes.size(); ++n) {
+            const OctreeNode nd = t.nodes[n];
+            if (nd.level >= L) continue;
+            const double phi_lo = 2 * kPi * nd.z / double(1 << nd.level);
+            const int want = phi_lo < kPi ? 5 : phi_lo < 1.5 * kPi ? 4 : 3;
+            if (nd.level < 3 || nd.level < want) t.split(n);
+        }
+        const std::size_t crossings = place_vertices(t, {});
+        std::vector<PoleRing> rings;
+        PolygonSoup s;
+        REQUIRE_NOTHROW(s = contour(t, &rings));
+        const std::size_t polygons = s.n_faces();
+        fill_poles(s, rings, *cs.f, cs.origin, PoleFill::normal_projection);
+        bool level_with_vertex[L + 1] = {};
+        for (std::uint32_t li : tree_shape(t).leaves)
+            if (t.nodes[li].vertex != invalid_index) level_with_vertex[t.nodes[li].level] = true;
+        INFO(std::string(cs.what) << ", origin " << str(cs.origin) << ", shell [0, " << cs.r_max << "], leaves of level 5 (phi < pi), "
+                     << "4 (phi < 3pi/2) and 3: " << crossings << " crossings, " << polygons << " triangles, "
+                     << rings.size() << " pole rings");
+        CHECK(level_with_vertex[3]);
+        CHECK(level_with_vertex[4]);
+        CHECK(level_with_vertex[5]);
+        LAB09_CHECK_CLOSED_MANIFOLD(s, cs.what);
+        CHECK(enclosed_volume(s) > 0);
+        std::size_t against = 0;
+        for (std::size_t i = 0; i < polygons; ++i) {
+            auto vs = s.face(i);
+            REQUIRE(vs.size() == 3);
+            const glm::dvec3 p0 = s.positions[vs[0]], p1 = s.positions[vs[1]], p2 = s.positions[vs[2]];
+            against += glm::dot(glm::cross(p1 - p0, p2 - p0), cs.f->gradient((p0 + p1 + p2) / 3.0)) < 0;
+        }
+        CHECK_MESSAGE(against * 50 < polygons, against << " of " << polygons << " triangles face against grad f");
+    }
+}
+
 }  // TEST_SUITE
 
 TEST_SUITE("Task 7: Cartesian one-shot") {
