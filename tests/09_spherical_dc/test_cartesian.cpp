@@ -58,7 +58,7 @@ TEST_CASE("dual_contour_cartesian: a box and a cube give exactly 8 vertices and 
 }
 
 TEST_CASE("dual_contour_cartesian: vertices lie on the surface; max |f(v)| <= 0.01 h at levels 7-8" *
-          geolab::points(2) *
+          geolab::points(1) *
           geolab::hint("The reference measures max|f|/h = 0.0059 (sphere, level 7) and 0.0076 (torus, level 8). A "
                        "larger error: crossings not converged (tolerance relative to the edge), normals not unit, "
                        "QEF not solved about the mass point, or vertices clamped wrongly. Handout §5.1.")) {
@@ -115,7 +115,7 @@ TEST_CASE("dual_contour_cartesian: bad parameters throw std::invalid_argument" *
     CHECK(max_abs_f(tiny, ten) < 0.3 * finest_h(tiny, 10));
 }
 
-TEST_CASE("dual_contour_cartesian: DcStats describes the tree that was contoured, with simplification on and off" *
+TEST_CASE("dual_contour_cartesian: DcStats describes the tree that was contoured (simplification on and off)" *
           geolab::points(1) *
           geolab::hint("cells = nodes reachable from the root after simplification, leaves = reachable leaves, "
                        "crossings = what place_vertices returned, collapses = what simplify returned (0 when "

@@ -133,7 +133,7 @@ TEST_CASE("place_vertices: the cells at a box's corners get the exact corners; e
 
 TEST_SUITE("Task 5: simplification") {
 
-TEST_CASE("simplify: a box collapses to its 8 corner vertices" * geolab::points(2) *
+TEST_CASE("simplify: a box collapses to its 8 corner vertices" * geolab::points(1) *
           geolab::hint("Bottom-up: 8 leaf children merge when the sign tests pass and the merged QEF's residual "
                        "sqrt(Q / count) <= tolerance with its minimiser in the parent cell. Flat faces and straight "
                        "edges fit exactly, so only the corners remain. Handout §5.2.")) {
@@ -334,7 +334,7 @@ TEST_CASE("contour: one quad (two triangles) per sign-changing edge; every verte
 }
 
 TEST_CASE("contour: winding follows the sign (outward normals; the inside-out field flips every face)" *
-          geolab::points(2) *
+          geolab::points(1) *
           geolab::hint("Counter-clockwise around the edge's axis when the edge's LOWER end is inside (f <= 0), "
                        "reversed otherwise. Do not orient by geometry: -f has the same surface with inside and "
                        "outside swapped. Handout §5.3.")) {

@@ -135,7 +135,7 @@ TEST_CASE("correct_origin: starting exactly on the surface; the path leaves it i
 }
 
 TEST_CASE("correct_origin: moves to the nearer side along the gradient; stops at once when far enough" *
-          geolab::points(2) *
+          geolab::points(1) *
           geolab::hint("s = sign f(x0): slightly outside goes further out (+grad f), slightly inside goes in "
                        "(-grad f). |f(x0)| >= margin * unit returns {x0}. Handout §6.2.")) {
     const FieldPtr f = geolab::sphere({0.2, -0.1, 0.3}, 0.9);
@@ -163,7 +163,7 @@ TEST_CASE("correct_origin: moves to the nearer side along the gradient; stops at
     CHECK(path[0] == far);
 }
 
-TEST_CASE("correct_origin: where grad f vanishes, the step goes to the best of the 6 axis probes at delta * unit" *
+TEST_CASE("correct_origin: where grad f vanishes the step goes to the best of the 6 axis probes at delta times unit" *
           geolab::points(1) *
           geolab::hint("|grad f| < 1e-12: probe x +- delta * unit * e for the 6 axis directions e and step to the probe "
                        "with the largest s * f (s = the side we move to). The probe distance matters: a field can grow "

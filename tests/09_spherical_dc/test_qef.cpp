@@ -66,7 +66,7 @@ Reference eigen_reference(const Planes& pl, double tau) {
 
 TEST_SUITE("Task 1: QEF") {
 
-TEST_CASE("qef: rank 1 near-planar data gives the mass point projected onto the plane" * geolab::points(2) *
+TEST_CASE("qef: rank 1 near-planar data gives the mass point projected onto the plane" * geolab::points(1) *
           geolab::hint("tau = 0.01 truncates every eigenvalue of AtA below 0.01 * lambda_max: a (nearly) flat patch "
                        "has rank 1, and the solution must not drift along the plane. Solve about the mass point m: "
                        "x = m + (AtA)+ (Atb - AtA m). Handout §2.2.")) {
@@ -255,7 +255,7 @@ TEST_CASE("qef: near-planar and near-threshold data match an independent eigen-s
     CHECK(checked == 13);
 }
 
-TEST_CASE("qef: error(x) equals the brute-force sum of squares; accumulated in double" * geolab::points(2) *
+TEST_CASE("qef: error(x) equals the brute-force sum of squares; accumulated in double" * geolab::points(1) *
           geolab::hint("Q(x) = xT AtA x - 2 xT Atb + btb with every sum in double (float loses everything here: "
                        "the points are near 1e4 while Q is of order 1). Handout §2.1.")) {
     Lcg rng(3);

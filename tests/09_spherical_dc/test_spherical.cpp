@@ -83,7 +83,7 @@ void check_ball_rule(const Octree& t, const ScalarField& f, double lf) {
 TEST_SUITE("Task 10: spherical octree") {
 
 TEST_CASE("build_spherical_octree: cells halve r; theta and phi; refinement follows the ball rule" *
-          geolab::points(2) *
+          geolab::points(1) *
           geolab::hint("The root is always split. A cell is split iff |f(c)| <= Lf * R, c the point at the parameter "
                        "midpoint, R = max over r in {r_lo, r_hi} of sqrt(r2 + rc2 - 2 r rc cos(gamma)), gamma the "
                        "largest angle between c's direction and the 4 angular corners. Handout §7.2.")) {
@@ -316,7 +316,7 @@ TEST_CASE("place_vertices (spherical): each QEF holds its own cell's crossings; 
         }
 }
 
-TEST_CASE("dual_contour_spherical: a sphere across the phi = 0 seam leaves no crack" * geolab::points(2) *
+TEST_CASE("dual_contour_spherical: a sphere across the phi = 0 seam leaves no crack" * geolab::points(1) *
           geolab::hint("The lattice's phi index is taken modulo N: the cells at phi index N-1 and 0 are neighbours "
                        "(Octree::canonical / locate wrap it). Look up the 4 leaves around an edge with the wrapped "
                        "index. Handout §7.4.")) {
@@ -517,7 +517,7 @@ TEST_CASE("dual_contour_spherical: normal_projection closes both poles (2 rings;
     }
 }
 
-TEST_CASE("dual_contour_spherical: vertical_projection also closes; none leaves exactly 2 holes" * geolab::points(2) *
+TEST_CASE("dual_contour_spherical: vertical_projection also closes; none leaves exactly 2 holes" * geolab::points(1) *
           geolab::hint("PoleFill::none adds nothing: the mesh then has one boundary loop around each pole (and no "
                        "other defect). vertical_projection is the earlier ghost node: a flat cap at the ring's mean "
                        "height. Handout §8.")) {
