@@ -248,6 +248,18 @@ TEST_CASE("dual_contour_spherical: an origin on the surface is corrected and the
     REQUIRE(st.origin_path.size() >= 2);
     CHECK(st.origin_path.front() == glm::dvec3(0.0, 0.8, 0.0));
     CHECK(st.origin_path.back() == st.origin);
+    // the default unit: the largest extent of bounds() / 2^L (here 1.6 / 32), steps of delta = 1.5 units
+    for (std::size_t i = 1; i < st.origin_path.size(); ++i) {
+        const double step = glm::length(st.origin_path[i] - st.origin_path[i - 1]);
+        INFO("step " << i << " is " << step << " long, expected 1.5 * " << unit);
+        CHECK(std::abs(step - 1.5 * unit) < 1e-9 * unit);
+    }
+    // the default shell: r_max = 1.05 x the distance from the origin to the farthest corner of bounds()
+    double far = 0;
+    for (int c = 0; c < 8; ++c)
+        far = std::max(far, glm::length(glm::dvec3(c & 1 ? 0.8 : -0.8, c & 2 ? 0.8 : -0.8, c & 4 ? 0.8 : -0.8) - st.origin));
+    CHECK(st.r_min == 0.0);
+    CHECK(std::abs(st.r_max - 1.05 * far) < 1e-12 * far);
     CHECK(std::abs(f->value(st.origin)) >= 2.0 * unit * (1 - 1e-9));
     LAB09_CHECK_CLOSED_MANIFOLD(s, "sphere, corrected origin");
     CHECK(std::abs(enclosed_volume(s) - sphere_volume(0.8)) < 0.02 * sphere_volume(0.8));

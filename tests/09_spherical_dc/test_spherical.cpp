@@ -525,6 +525,9 @@ TEST_CASE("dual_contour_spherical: vertical_projection also closes; none leaves 
     DcStats sv, sn;
     const PolygonSoup v = spherical(*f, 5, PoleFill::vertical_projection, &sv);
     const PolygonSoup n = spherical(*f, 5, PoleFill::none, &sn);
+    // no origin given: the walk starts at the centre of bounds()
+    REQUIRE(!sv.origin_path.empty());
+    CHECK(glm::length(sv.origin_path.front() - f->bounds().center()) < 1e-15);
     LAB09_CHECK_CLOSED_MANIFOLD(v, "sphere level 5, vertical projection");
     CHECK(sv.ghost_vertices == 2);
     const EdgeReport r = edge_report(n);
