@@ -86,8 +86,11 @@ TEST_CASE("minimal_enclosing_sphere: random point sets match a brute-force searc
     for (int trial = 0; trial < 40; ++trial) {
         const int n = 5 + trial % 11;
         std::vector<glm::dvec3> pts;
-        const glm::dvec3 shift(rng.uniform(-5, 5), rng.uniform(-5, 5), rng.uniform(-5, 5));
-        const double scale = std::pow(10.0, rng.uniform(-2, 2));
+        glm::dvec3 shift(rng.uniform(-5, 5), rng.uniform(-5, 5), rng.uniform(-5, 5));
+        double scale = std::pow(10.0, rng.uniform(-2, 2));
+        // tiny and huge clouds about the origin: any tolerance must be relative to the scale
+        if (trial % 10 == 9) scale = 1e-6, shift = glm::dvec3(0.0);
+        if (trial % 10 == 8) scale = 1e5, shift = glm::dvec3(0.0);
         for (int i = 0; i < n; ++i) {
             glm::dvec3 p(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
             if (trial % 4 == 1) p *= glm::dvec3(1.0, 0.2, 0.05);  // flat clouds

@@ -528,6 +528,14 @@ TEST_CASE("dual_contour_spherical: vertical_projection also closes; none leaves 
     // no origin given: the walk starts at the centre of bounds()
     REQUIRE(!sv.origin_path.empty());
     CHECK(glm::length(sv.origin_path.front() - f->bounds().center()) < 1e-15);
+    // the default shell: 1.05 x the distance from the origin used to the farthest corner of bounds()
+    double far = 0;
+    const Box bb = f->bounds();
+    for (int c = 0; c < 8; ++c)
+        far = std::max(far, glm::length(glm::dvec3(c & 1 ? bb.hi.x : bb.lo.x, c & 2 ? bb.hi.y : bb.lo.y,
+                                                   c & 4 ? bb.hi.z : bb.lo.z) - sv.origin));
+    INFO("r_max " << sv.r_max << ", expected 1.05 x " << far << " (origin " << str(sv.origin) << ")");
+    CHECK(std::abs(sv.r_max - 1.05 * far) < 1e-12 * far);
     LAB09_CHECK_CLOSED_MANIFOLD(v, "sphere level 5, vertical projection");
     CHECK(sv.ghost_vertices == 2);
     const EdgeReport r = edge_report(n);

@@ -253,6 +253,26 @@ TEST_CASE("contour hidden: an adaptive tree (leaves of several levels) gives a c
         LAB09_CHECK_CLOSED_MANIFOLD(s, name);
         CHECK(enclosed_volume(s) > 0);
     }
+    // by hand: level 2 everywhere, one cell split to level 3; a tiny sphere holds only that cell's corner 0, so
+    // the finest edges leaving it have coarse leaves in the quadrants below
+    const TinySphere probe_field(glm::dvec3(0.0), 1.0);
+    const auto [lo, side] = cartesian_domain(probe_field, 0.05);
+    Octree t;
+    t.init_cartesian(probe_field, 3, lo, side);
+    const glm::dvec3 q = t.lattice_point({4, 4, 4});
+    const TinySphere f(q, 0.3 * side / 8);
+    t.init_cartesian(f, 3, lo, side);
+    for (std::uint32_t n = 0; n < t.nodes.size(); ++n)
+        if (t.nodes[n].level < 2 || (t.nodes[n].level == 2 && t.nodes[n].x == 2 && t.nodes[n].y == 2 && t.nodes[n].z == 2))
+            t.split(n);
+    place_vertices(t, {});
+    PolygonSoup s;
+    REQUIRE_NOTHROW(s = contour(t));
+    INFO("sphere r = 0.3 h around lattice point (4, 4, 4), level 3; cell (2, 2, 2) of level 2 split, the rest level 2: "
+         << describe(edge_report(s)));
+    LAB09_CHECK_CLOSED_MANIFOLD(s, "one inside lattice point, 7 coarse and 1 finest leaf around it");
+    CHECK(s.n_vertices() == 8);
+    CHECK(enclosed_volume(s) > 0);
 }
 
 TEST_CASE("contour hidden: a spherical tree with leaves of levels 3 to 5 around the surface is closed and oriented" *
