@@ -339,6 +339,45 @@ public:
     glm::dvec3 lo_, hi_;
 };
 
+// f = |p - c|^2 - R^2 without a Lipschitz constant (lipschitz() == 0): |grad f| = 2 |p - c| grows with the distance,
+// so the octrees' estimate (2 x the largest |grad f| on a 9^3 lattice) depends on exactly which lattice is sampled.
+class QuadraticBall final : public ScalarField {
+public:
+    QuadraticBall(glm::dvec3 c, double r) : c_(c), r_(r) {}
+    double value(const glm::dvec3& p) const override { return glm::dot(p - c_, p - c_) - r_ * r_; }
+    glm::dvec3 gradient(const glm::dvec3& p) const override { return 2.0 * (p - c_); }
+    Box bounds() const override { return {c_ - r_, c_ + r_}; }
+    // the estimate build_octree / build_spherical_octree must make over the cube [lo, lo + side]^3
+    double estimate(const glm::dvec3& lo, double side) const {
+        double g = 0;
+        for (int i = 0; i <= 8; ++i)
+            for (int j = 0; j <= 8; ++j)
+                for (int k = 0; k <= 8; ++k) g = std::max(g, glm::length(gradient(lo + side / 8.0 * glm::dvec3(i, j, k))));
+        return 2.0 * g;
+    }
+    glm::dvec3 c_;
+    double r_;
+};
+
+// A sphere a few finest cells wide at level 10 inside large bounds ([-1, 1]^3): the octrees refine only around it,
+// so max_level = 10 (the largest allowed) stays small and fast.
+class TinySphere final : public ScalarField {
+public:
+    TinySphere(glm::dvec3 c, double r) : c_(c), r_(r) {}
+    double value(const glm::dvec3& p) const override { return glm::length(p - c_) - r_; }
+    glm::dvec3 gradient(const glm::dvec3& p) const override {
+        const glm::dvec3 d = p - c_;
+        const double len = glm::length(d);
+        return len > 0 ? d / len : glm::dvec3(0.0);
+    }
+    Box bounds() const override { return {glm::dvec3(-1.0), glm::dvec3(1.0)}; }
+    double lipschitz() const override { return 1.0; }
+
+private:
+    glm::dvec3 c_;
+    double r_;
+};
+
 // The plane z = z0 (value exact), but with gradients that swing around wildly (∇f is NOT the plane's normal):
 // the QEF planes then meet far away, so unclamped minimisers leave their cells.
 class WobblyPlane final : public ScalarField {

@@ -58,7 +58,7 @@ TEST_CASE("dual_contour_cartesian: a box and a cube give exactly 8 vertices and 
 }
 
 TEST_CASE("dual_contour_cartesian: vertices lie on the surface; max |f(v)| <= 0.01 h at levels 7-8" *
-          geolab::points(2) *
+          geolab::points(1) *
           geolab::hint("The reference measures max|f|/h = 0.0059 (sphere, level 7) and 0.0076 (torus, level 8). A "
                        "larger error: crossings not converged (tolerance relative to the edge), normals not unit, "
                        "QEF not solved about the mass point, or vertices clamped wrongly. Handout §5.1.")) {
@@ -106,6 +106,63 @@ TEST_CASE("dual_contour_cartesian: bad parameters throw std::invalid_argument" *
     REQUIRE(ok.n_faces() > 0);
     CHECK_THROWS_AS(cartesian(*f, 0), std::invalid_argument);
     CHECK_THROWS_AS(cartesian(*f, 11), std::invalid_argument);
+    // level 10 is accepted: a sphere of radius 0.004 (about 2 finest cells) inside the bounds [-1, 1]^3
+    const TinySphere tiny({0.3, -0.2, 0.1}, 0.004);
+    PolygonSoup ten;
+    CHECK_NOTHROW(ten = cartesian(tiny, 10));
+    LAB09_CHECK_CLOSED_MANIFOLD(ten, "tiny sphere r = 0.004 at (0.3, -0.2, 0.1), level 10");
+    INFO("max |f(v)| = " << max_abs_f(tiny, ten) / finest_h(tiny, 10) << " h (reference 0.2 h: the sphere is 2 cells wide)");
+    CHECK(max_abs_f(tiny, ten) < 0.3 * finest_h(tiny, 10));
+}
+
+TEST_CASE("dual_contour_cartesian: DcStats describes the tree that was contoured (simplification on and off)" *
+          geolab::points(1) *
+          geolab::hint("cells = nodes reachable from the root after simplification, leaves = reachable leaves, "
+                       "crossings = what place_vertices returned, collapses = what simplify returned (0 when "
+                       "simplify_tolerance is 0: simplification off), samples = the tree's samples(). Handout §5.4.")) {
+    const std::pair<FieldPtr, const char*> shapes[] = {{geolab::sphere({0.1, -0.05, 0.0}, 0.7), "sphere r = 0.7"},
+                                                       {geolab::named_implicit("box"), "box"},
+                                                       {geolab::torus({0, 0, 0}, 0.6, 0.25), "torus"}};
+    for (const auto& [f, name_c] : shapes)
+        for (double tol : {0.0, 1e-5, 0.2}) {
+            const std::string name(name_c);
+            CartesianParams p;
+            p.max_level = 5;
+            p.simplify_tolerance = tol;
+            DcStats st;
+            const PolygonSoup s = dual_contour_cartesian(*f, p, &st);
+            // the same chain step by step
+            Octree t = build_octree(*f, p);
+            const std::size_t crossings = place_vertices(t, {p.tau, p.crossing_tolerance});
+            const std::size_t collapses = tol > 0 ? simplify(t, tol * t.size / t.resolution(), p.tau) : 0;
+            const PolygonSoup s2 = contour(t);
+            std::size_t nodes = 0;
+            std::vector<std::uint32_t> stack{0};
+            while (!stack.empty()) {
+                const std::uint32_t i = stack.back();
+                stack.pop_back();
+                ++nodes;
+                if (!t.nodes[i].is_leaf())
+                    for (int k = 0; k < 8; ++k) stack.push_back(t.nodes[i].first_child + k);
+            }
+            const std::size_t leaves = tree_shape(t).leaves.size();
+            INFO(name << ", level 5, simplify_tolerance " << tol << " h: DcStats cells " << st.cells << ", leaves "
+                      << st.leaves << ", samples " << st.samples << ", crossings " << st.crossings << ", collapses "
+                      << st.collapses << "; the tree: " << nodes << " reachable nodes, " << leaves << " leaves, "
+                      << t.samples() << " samples, " << crossings << " crossings, " << collapses << " collapses");
+            CHECK(st.cells == nodes);
+            CHECK(st.leaves == leaves);
+            CHECK(st.samples == t.samples());
+            CHECK(st.crossings == crossings);
+            CHECK(st.collapses == collapses);
+            if (tol == 0) CHECK(st.collapses == 0);
+            else CHECK(st.collapses > 0);
+            CHECK(st.vertices == s.n_vertices());
+            CHECK(st.faces == s.n_faces());
+            CHECK(s.n_faces() == s2.n_faces());
+            CHECK(s.n_vertices() == s2.n_vertices());
+            CHECK(st.seconds >= 0.0);
+        }
 }
 
 }  // TEST_SUITE

@@ -133,7 +133,7 @@ TEST_CASE("place_vertices: the cells at a box's corners get the exact corners; e
 
 TEST_SUITE("Task 5: simplification") {
 
-TEST_CASE("simplify: a box collapses to its 8 corner vertices" * geolab::points(2) *
+TEST_CASE("simplify: a box collapses to its 8 corner vertices" * geolab::points(1) *
           geolab::hint("Bottom-up: 8 leaf children merge when the sign tests pass and the merged QEF's residual "
                        "sqrt(Q / count) <= tolerance with its minimiser in the parent cell. Flat faces and straight "
                        "edges fit exactly, so only the corners remain. Handout §5.2.")) {
@@ -209,6 +209,98 @@ TEST_CASE("simplify: the topology tests keep two nearby solids apart at any tole
     }
 }
 
+TEST_CASE("simplify: tolerance 0 merges only exact fits; a box with faces on coarse lattice planes gives 8 corners" *
+          geolab::points(1) *
+          geolab::hint("Collapse when sqrt(Q / count) <= tolerance: with tolerance 0 the cells whose merged QEF fits "
+                       "exactly (Q = 0: flat faces with exact crossings) still merge, nothing else does. Samples that "
+                       "are exactly 0 (faces on lattice planes) are inside, in the 27 sub-lattice signs too. "
+                       "Handout §5.2.")) {
+    // a box whose faces lie half-way between finest lattice planes, on a dyadic lattice (domain [-2, 2]^3, h = 1/8):
+    // every crossing, normal and QEF sum on a face is exact, so a face's merged QEF has Q = 0 exactly
+    struct DyadicBox final : ScalarField {
+        glm::dvec3 lo{-2.0 + 0.125 * 6.5, -2.0 + 0.125 * 9.5, -2.0 + 0.125 * 10.5};
+        glm::dvec3 hi{-2.0 + 0.125 * 25.5, -2.0 + 0.125 * 22.5, -2.0 + 0.125 * 21.5};
+        double value(const glm::dvec3& p) const override {
+            double v = -1e300;
+            for (int a = 0; a < 3; ++a) v = std::max({v, lo[a] - p[a], p[a] - hi[a]});
+            return v;
+        }
+        glm::dvec3 gradient(const glm::dvec3& p) const override {
+            double best = -1e300;
+            glm::dvec3 g(0.0);
+            for (int a = 0; a < 3; ++a)
+                for (int sg : {-1, 1}) {
+                    const double v = sg < 0 ? lo[a] - p[a] : p[a] - hi[a];
+                    if (v > best) best = v, g = glm::dvec3(0.0), g[a] = sg;
+                }
+            return g;
+        }
+        Box bounds() const override { return {glm::dvec3(-1.0), glm::dvec3(1.0)}; }
+        double lipschitz() const override { return 1.0; }
+    } dyadic;
+    {
+        CartesianParams p;
+        p.max_level = 5;
+        p.padding = 0.5;
+        Octree t = build_octree(dyadic, p);
+        REQUIRE(t.size == 4.0);
+        REQUIRE(t.min_corner == glm::dvec3(-2.0));
+        place_vertices(t, {});
+        const std::size_t before = leaves_with_vertex(t);
+        const std::size_t collapses = simplify(t, 0.0, 0.01);
+        const std::size_t after = leaves_with_vertex(t);
+        const double h = 0.125;
+        std::size_t inexact = 0;
+        std::ostringstream first;
+        for (std::uint32_t li : tree_shape(t).leaves) {
+            const OctreeNode& nd = t.nodes[li];
+            if (nd.vertex == invalid_index || nd.level == t.max_level) continue;
+            REQUIRE(nd.vertex < t.vertices.size());
+            // Q(x) of the merged QEF, from its sums (x^T AtA x - 2 x^T Atb + btb)
+            const DualVertex& v = t.vertices[nd.vertex];
+            const Qef& q = v.qef;
+            const glm::dvec3 x = v.position;
+            const double xax = q.ata[0] * x.x * x.x + q.ata[3] * x.y * x.y + q.ata[5] * x.z * x.z +
+                               2 * (q.ata[1] * x.x * x.y + q.ata[2] * x.x * x.z + q.ata[4] * x.y * x.z);
+            const double residual = std::sqrt(std::max(0.0, xax - 2 * glm::dot(x, q.atb) + q.btb) / std::max(q.count, 1));
+            if (residual > 1e-9 * h && inexact++ < 3)
+                first << "\n  merged leaf level " << int(nd.level) << " (" << nd.x << ", " << nd.y << ", " << nd.z
+                      << "): sqrt(Q/count) = " << residual / h << " h at its vertex " << str(x);
+        }
+        const PolygonSoup s = contour(t);
+        INFO("box with faces half-way between lattice planes (exact arithmetic), level 5, tolerance 0: leaves with a "
+             "vertex " << before << " before, " << after << " after " << collapses << " collapses");
+        CHECK_MESSAGE(after < before, "no cell with a vertex merged at tolerance 0, although flat faces fit exactly");
+        CHECK_MESSAGE(inexact == 0, inexact << " merged leaves do not fit their QEF exactly" << first.str());
+        LAB09_CHECK_CLOSED_MANIFOLD(s, "dyadic box, simplified at tolerance 0");
+        const glm::dvec3 e = dyadic.hi - dyadic.lo;
+        CHECK(std::abs(enclosed_volume(s) - e.x * e.y * e.z) < 1e-9 * e.x * e.y * e.z);
+        CHECK(max_abs_f(dyadic, s) < 1e-9 * h);
+    }
+    // boxes whose faces lie on the lattice planes of level 3 or 2 (every sample on a face is exactly 0: inside)
+    const LatticeBox coarse[] = {LatticeBox(5, 0.05, {8, 8, 8}, {24, 24, 16}),
+                                 LatticeBox(5, 0.05, {4, 8, 12}, {28, 20, 24})};
+    for (const LatticeBox& f : coarse) {
+        Octree t;
+        const PolygonSoup s = cartesian_pipeline(f, 5, 1e-5, &t);
+        const double h = t.size / t.resolution();
+        INFO("box " << str(f.lo_) << " - " << str(f.hi_) << " with faces on coarse lattice planes, level 5, "
+                    << "tolerance 1e-5 h: " << s.n_vertices() << " vertices, " << s.n_faces() << " faces");
+        CHECK(s.n_vertices() == 8);
+        CHECK(s.n_faces() == 12);
+        LAB09_CHECK_CLOSED_MANIFOLD(s, "coarse lattice box, simplified");
+        for (const glm::dvec3& v : s.positions) {
+            double nearest = 1e300;
+            for (int c = 0; c < 8; ++c)
+                nearest = std::min(nearest, glm::length(v - glm::dvec3(c & 1 ? f.hi_.x : f.lo_.x, c & 2 ? f.hi_.y : f.lo_.y,
+                                                                        c & 4 ? f.hi_.z : f.lo_.z)));
+            CHECK_MESSAGE(nearest < 1e-6 * h, "vertex " << str(v) << " is " << nearest / h << " h from the nearest corner");
+        }
+        const glm::dvec3 e = f.hi_ - f.lo_;
+        CHECK(std::abs(enclosed_volume(s) - e.x * e.y * e.z) < 1e-6 * e.x * e.y * e.z);
+    }
+}
+
 }  // TEST_SUITE
 
 TEST_SUITE("Task 6: contouring polygons") {
@@ -242,7 +334,7 @@ TEST_CASE("contour: one quad (two triangles) per sign-changing edge; every verte
 }
 
 TEST_CASE("contour: winding follows the sign (outward normals; the inside-out field flips every face)" *
-          geolab::points(2) *
+          geolab::points(1) *
           geolab::hint("Counter-clockwise around the edge's axis when the edge's LOWER end is inside (f <= 0), "
                        "reversed otherwise. Do not orient by geometry: -f has the same surface with inside and "
                        "outside swapped. Handout §5.3.")) {

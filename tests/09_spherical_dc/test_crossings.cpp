@@ -177,7 +177,8 @@ TEST_CASE("find_crossing_arc: a phi-arc crossing lies on the arc (constant r and
 
 TEST_CASE("find_crossing_arc: theta-arcs keep r and phi; radial edges keep the direction" * geolab::points(1) *
           geolab::hint("Only the parameter that differs between the ends changes along the edge: a meridian "
-                       "(theta-arc) keeps r and phi; a radial edge keeps theta and phi. Handout §3.3.")) {
+                       "(theta-arc) keeps r and phi; a radial edge keeps theta and phi. Where grad f = 0 the normal "
+                       "is the unit direction along the edge from its inside end to its outside end. Handout §3.3.")) {
     const glm::dvec3 origin(-0.5, 0.25, 0.1);
     const Ball f(origin + glm::dvec3(0.0, 0.0, 0.6), 1.0);  // a sphere whose centre is off the origin
     // theta-arc at r = 1.2, phi = 0.8, from the north pole (inside) to theta = 2.5 (outside)
@@ -210,6 +211,30 @@ TEST_CASE("find_crossing_arc: theta-arcs keep r and phi; radial edges keep the d
         CHECK(std::abs(s.phi - 4.0) < 1e-9);
         CHECK(std::abs(f.value(c.point)) < 1e-8);
         CHECK(glm::dot(c.normal, c.point - f.c) > 0.0);
+    }
+    // zero gradient (f = y - 0.25): the normal is the unit direction along the edge from its inside end to its
+    // outside end; on an arc of angle w the tangent and the chord agree within w / 2
+    const FlatGradient flat;
+    const glm::dvec3 o0(0.0);
+    struct Arc {
+        Spherical a, b;
+        double angle;  // the arc's angle (0 for a radial edge)
+        const char* what;
+    } arcs[] = {{{0.8, 0.9, 0.2}, {0.8, 0.9, 1.4}, 1.2, "phi-arc r = 0.8, theta = 0.9, phi 0.2 -> 1.4 (inside -> outside)"},
+                {{0.8, 0.9, 1.4}, {0.8, 0.9, 0.2}, 1.2, "phi-arc r = 0.8, theta = 0.9, phi 1.4 -> 0.2 (outside -> inside)"},
+                {{0.9, 0.1, 1.2}, {0.9, 1.6, 1.2}, 1.5, "theta-arc r = 0.9, phi = 1.2, theta 0.1 -> 1.6"},
+                {{0.1, 1.3, 1.5}, {0.9, 1.3, 1.5}, 0.0, "radial edge theta = 1.3, phi = 1.5, r 0.1 -> 0.9"}};
+    for (const Arc& arc : arcs) {
+        const glm::dvec3 pa = cart_of(arc.a.r, arc.a.theta, arc.a.phi), pb = cart_of(arc.b.r, arc.b.theta, arc.b.phi);
+        const double fa = flat.value(pa), fb = flat.value(pb);
+        REQUIRE(inside(fa) != inside(fb));
+        const Crossing c = find_crossing_arc(flat, o0, arc.a, arc.b, fa, fb, 1e-10);
+        const glm::dvec3 chord = glm::normalize(inside(fa) ? pb - pa : pa - pb);
+        INFO(std::string(arc.what) << ", |grad f| = 0: normal " << str(c.normal) << ", chord from inside to outside "
+                                   << str(chord));
+        CHECK(std::abs(c.point.y - 0.25) < 1e-9);
+        CHECK(std::abs(glm::length(c.normal) - 1.0) < 1e-9);
+        CHECK(glm::dot(c.normal, chord) >= std::cos(0.5 * arc.angle) - 1e-9);
     }
 }
 

@@ -55,42 +55,52 @@ TEST_CASE("build_octree: every finest cell the sphere passes through is a leaf a
 TEST_CASE("build_octree: refines exactly the cells allowed by the conservative test; leaves tile the cube" *
           geolab::points(2) *
           geolab::hint("Internal nodes: |f(c)| <= Lf * half diagonal; leaves above max_level: |f(c)| > Lf * half "
-                       "diagonal (do not refine everything: the tree must stay sparse). Use Octree::split so "
+                       "diagonal (do not refine everything: the tree must stay sparse). lipschitz() == 0: Lf = 2 x "
+                       "the largest |grad f| at the 9^3 points lo + side/8 (i, j, k). Use Octree::split so "
                        "children follow the c = cx + 2cy + 4cz order. Handout §4.2.")) {
-    const FieldPtr f = geolab::torus({0.05, 0.0, -0.1}, 0.6, 0.25);
-    const int L = 5;
-    const Octree t = build_octree(*f, params(L));
-    const TreeShape shape = tree_shape(t);
-    INFO("torus R = 0.6, r = 0.25, level " << L << ": " << shape.leaves.size() << " leaves");
-    REQUIRE(shape.leaves.size() > 8);
-    CHECK(shape.bad_children == 0);
-    CHECK(shape.deeper_than_max == 0);
-    double volume = 0;
-    const double h = t.size / t.resolution();
-    std::size_t too_coarse = 0, too_fine = 0;
-    // every reachable node: the rule, from its centre sample
-    std::vector<std::uint32_t> stack{0};
-    while (!stack.empty()) {
-        const std::uint32_t n = stack.back();
-        stack.pop_back();
-        const OctreeNode& nd = t.nodes[n];
-        const std::int32_t s = t.cell_span(nd.level);
-        const glm::dvec3 c = t.min_corner + h * (glm::dvec3(nd.x, nd.y, nd.z) * double(s) + 0.5 * s);
-        const double half_diag = 0.5 * std::sqrt(3.0) * h * s;
-        const double v = std::abs(f->value(c)), bound = f->lipschitz() * half_diag;
-        if (nd.is_leaf()) {
-            volume += std::pow(h * s, 3);
-            if (nd.level < L && v <= bound * (1 - 1e-9)) ++too_coarse;
-        } else {
-            if (v > bound * (1 + 1e-9)) ++too_fine;
-            for (int k = 0; k < 8; ++k) stack.push_back(nd.first_child + k);
+    const FieldPtr torus = geolab::torus({0.05, 0.0, -0.1}, 0.6, 0.25);
+    // and a field without a Lipschitz constant: Lf = 2 max |grad f| on the 9^3 lattice of the domain cube
+    const QuadraticBall quadratic({0.1, -0.2, 0.05}, 0.6);
+    for (int k = 0; k < 2; ++k) {
+        const ScalarField& f = k == 0 ? *torus : static_cast<const ScalarField&>(quadratic);
+        const int L = 5;
+        const Octree t = build_octree(f, params(L));
+        const double lf = k == 0 ? f.lipschitz() : quadratic.estimate(t.min_corner, t.size);
+        const TreeShape shape = tree_shape(t);
+        INFO((k == 0 ? std::string("torus R = 0.6, r = 0.25")
+                     : "f = |p - c|^2 - 0.36, c = (0.1, -0.2, 0.05), no Lipschitz constant (expected estimate Lf = " +
+                           std::to_string(lf) + ")")
+             << ", level " << L << ": " << shape.leaves.size() << " leaves");
+        REQUIRE(shape.leaves.size() > 8);
+        CHECK(shape.bad_children == 0);
+        CHECK(shape.deeper_than_max == 0);
+        double volume = 0;
+        const double h = t.size / t.resolution();
+        std::size_t too_coarse = 0, too_fine = 0;
+        // every reachable node: the rule, from its centre sample
+        std::vector<std::uint32_t> stack{0};
+        while (!stack.empty()) {
+            const std::uint32_t n = stack.back();
+            stack.pop_back();
+            const OctreeNode& nd = t.nodes[n];
+            const std::int32_t s = t.cell_span(nd.level);
+            const glm::dvec3 c = t.min_corner + h * (glm::dvec3(nd.x, nd.y, nd.z) * double(s) + 0.5 * s);
+            const double half_diag = 0.5 * std::sqrt(3.0) * h * s;
+            const double v = std::abs(f.value(c)), bound = lf * half_diag;
+            if (nd.is_leaf()) {
+                volume += std::pow(h * s, 3);
+                if (nd.level < L && v <= bound * (1 - 1e-9)) ++too_coarse;
+            } else {
+                if (v > bound * (1 + 1e-9)) ++too_fine;
+                for (int c8 = 0; c8 < 8; ++c8) stack.push_back(nd.first_child + c8);
+            }
         }
+        CHECK_MESSAGE(too_coarse == 0, too_coarse << " leaves above max_level pass the test |f(c)| <= Lf * half "
+                                                     "diagonal (they may contain the surface and must be split)");
+        CHECK_MESSAGE(too_fine == 0, too_fine << " nodes were split although |f(c)| > Lf * half diagonal (over-refined)");
+        CHECK(std::abs(volume - std::pow(t.size, 3)) < 1e-9 * std::pow(t.size, 3));
+        if (k == 0) CHECK(shape.leaves.size() < std::size_t(1) << (3 * L - 2));
     }
-    CHECK_MESSAGE(too_coarse == 0, too_coarse << " leaves above max_level pass the test |f(c)| <= Lf * half diagonal "
-                                              "(they may contain the surface and must be split)");
-    CHECK_MESSAGE(too_fine == 0, too_fine << " nodes were split although |f(c)| > Lf * half diagonal (over-refined)");
-    CHECK(std::abs(volume - std::pow(t.size, 3)) < 1e-9 * std::pow(t.size, 3));
-    CHECK(shape.leaves.size() < std::size_t(1) << (3 * L - 2));
 }
 
 TEST_CASE("build_octree: a thin torus (tube thinner than the coarse cells) is refined all along" * geolab::points(2) *
@@ -130,11 +140,27 @@ TEST_CASE("build_octree: a mesh with a hole (its sign jumps across the hole): ev
     }
 }
 
-TEST_CASE("build_octree: max_level outside 1..10 throws std::invalid_argument" * geolab::points(1) *
-          geolab::hint("Check the level first (Octree::init_cartesian does it too). Handout §4.1.")) {
+TEST_CASE("build_octree: max_level outside 1..10 throws std::invalid_argument; 1 and 10 are accepted" *
+          geolab::points(1) *
+          geolab::hint("Check the level first (Octree::init_cartesian does it too): 1 <= max_level <= 10, both ends "
+                       "included. Handout §4.1.")) {
     const FieldPtr f = geolab::sphere({0, 0, 0}, 0.5);
     const Octree ok = build_octree(*f, params(3));
     REQUIRE(ok.nodes.size() > 1);
+    const Octree one = build_octree(*f, params(1));
+    CHECK(one.max_level == 1);
+    CHECK(tree_shape(one).leaves.size() == 8);
+    // level 10 around a sphere of radius 0.004 (about 2 finest cells) inside the bounds [-1, 1]^3
+    const TinySphere tiny({0.3, -0.2, 0.1}, 0.004);
+    Octree ten;
+    CHECK_NOTHROW(ten = build_octree(tiny, params(10)));
+    INFO("tiny sphere, level 10: " << ten.nodes.size() << " nodes, max_level " << ten.max_level);
+    CHECK(ten.max_level == 10);
+    REQUIRE(ten.nodes.size() > 1);
+    const std::uint32_t leaf = leaf_at(ten, {0.3, -0.2, 0.104});
+    REQUIRE(leaf != invalid_index);
+    CHECK(int(ten.nodes[leaf].level) == 10);
+    CHECK(tree_shape(ten).deeper_than_max == 0);
     CHECK_THROWS_AS(build_octree(*f, params(0)), std::invalid_argument);
     CHECK_THROWS_AS(build_octree(*f, params(11)), std::invalid_argument);
     CHECK_THROWS_AS(build_octree(*f, params(-2)), std::invalid_argument);

@@ -86,8 +86,11 @@ TEST_CASE("minimal_enclosing_sphere: random point sets match a brute-force searc
     for (int trial = 0; trial < 40; ++trial) {
         const int n = 5 + trial % 11;
         std::vector<glm::dvec3> pts;
-        const glm::dvec3 shift(rng.uniform(-5, 5), rng.uniform(-5, 5), rng.uniform(-5, 5));
-        const double scale = std::pow(10.0, rng.uniform(-2, 2));
+        glm::dvec3 shift(rng.uniform(-5, 5), rng.uniform(-5, 5), rng.uniform(-5, 5));
+        double scale = std::pow(10.0, rng.uniform(-2, 2));
+        // tiny and huge clouds about the origin: any tolerance must be relative to the scale
+        if (trial % 10 == 9) scale = 1e-6, shift = glm::dvec3(0.0);
+        if (trial % 10 == 8) scale = 1e5, shift = glm::dvec3(0.0);
         for (int i = 0; i < n; ++i) {
             glm::dvec3 p(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
             if (trial % 4 == 1) p *= glm::dvec3(1.0, 0.2, 0.05);  // flat clouds
@@ -135,7 +138,7 @@ TEST_CASE("correct_origin: starting exactly on the surface; the path leaves it i
 }
 
 TEST_CASE("correct_origin: moves to the nearer side along the gradient; stops at once when far enough" *
-          geolab::points(2) *
+          geolab::points(1) *
           geolab::hint("s = sign f(x0): slightly outside goes further out (+grad f), slightly inside goes in "
                        "(-grad f). |f(x0)| >= margin * unit returns {x0}. Handout §6.2.")) {
     const FieldPtr f = geolab::sphere({0.2, -0.1, 0.3}, 0.9);
@@ -161,6 +164,60 @@ TEST_CASE("correct_origin: moves to the nearer side along the gradient; stops at
     INFO("start at f = 2.5 unit (margin 2): " << path.size() << " positions");
     REQUIRE(path.size() == 1);
     CHECK(path[0] == far);
+}
+
+TEST_CASE("correct_origin: where grad f vanishes the step goes to the best of the 6 axis probes at delta times unit" *
+          geolab::points(1) *
+          geolab::hint("|grad f| < 1e-12: probe x +- delta * unit * e for the 6 axis directions e and step to the probe "
+                       "with the largest s * f (s = the side we move to). The probe distance matters: a field can grow "
+                       "fastest along one axis near x and along another farther away. Handout §6.")) {
+    // f = s0 (c + A max(x, 0)^4 + B max(y, 0)^2 + g z): zero value gradient at the origin when g = 0. +X wins
+    // beyond d* = sqrt(B / A) = 0.05 and +Y below it; every other probe gives c.
+    struct Probe final : ScalarField {
+        double sign = 1.0, g = 0.0;
+        double value(const glm::dvec3& p) const override {
+            const double x = std::max(p.x, 0.0), y = std::max(p.y, 0.0);
+            return sign * (0.01 + x * x * x * x + 0.0025 * y * y + g * p.z);
+        }
+        glm::dvec3 gradient(const glm::dvec3& p) const override {
+            const double x = std::max(p.x, 0.0), y = std::max(p.y, 0.0);
+            return sign * glm::dvec3(4.0 * x * x * x, 0.005 * y, g);
+        }
+        Box bounds() const override { return {glm::dvec3(-1.0), glm::dvec3(1.0)}; }
+    };
+    int checked = 0;
+    for (double sign : {1.0, -1.0})
+        for (double g : {0.0, 1e-13, 1e-11})
+            for (double step : {0.035, 0.07}) {
+                Probe f;
+                f.sign = sign;
+                f.g = g;
+                OriginParams op;
+                op.unit = step / op.delta;
+                const glm::dvec3 x0(0.0);
+                const auto path = correct_origin(f, x0, op);
+                // the expected first position: the best probe (|grad f| < 1e-12), or one step along s grad f
+                glm::dvec3 want(0.0, 0.0, step * (g > 0 ? 1.0 : 0.0));
+                const char* rule = "one step along s * grad f / |grad f|";
+                if (glm::length(f.gradient(x0)) < 1e-12) {
+                    rule = "the axis probe with the largest s * f";
+                    double best = -1e300;
+                    for (int a = 0; a < 3; ++a)
+                        for (double e : {1.0, -1.0}) {
+                            glm::dvec3 q(0.0);
+                            q[a] = e * step;
+                            if (sign * f.value(q) > best) best = sign * f.value(q), want = q;
+                        }
+                }
+                INFO("f = " << (sign > 0 ? "" : "-") << "(0.01 + max(x,0)^4 + 0.0025 max(y,0)^2 + " << g
+                            << " z) from the origin, delta * unit = " << step << ": expected " << rule << " "
+                            << str(want) << ", got " << (path.size() > 1 ? str(path[1]) : std::string("no step")));
+                REQUIRE(path.size() >= 2);
+                CHECK(path[0] == x0);
+                CHECK(glm::length(path[1] - want) < 1e-12);
+                ++checked;
+            }
+    CHECK(checked == 12);
 }
 
 TEST_CASE("correct_origin: unit <= 0 throws std::invalid_argument" * geolab::points(1) *
@@ -194,6 +251,18 @@ TEST_CASE("dual_contour_spherical: an origin on the surface is corrected and the
     REQUIRE(st.origin_path.size() >= 2);
     CHECK(st.origin_path.front() == glm::dvec3(0.0, 0.8, 0.0));
     CHECK(st.origin_path.back() == st.origin);
+    // the default unit: the largest extent of bounds() / 2^L (here 1.6 / 32), steps of delta = 1.5 units
+    for (std::size_t i = 1; i < st.origin_path.size(); ++i) {
+        const double step = glm::length(st.origin_path[i] - st.origin_path[i - 1]);
+        INFO("step " << i << " is " << step << " long, expected 1.5 * " << unit);
+        CHECK(std::abs(step - 1.5 * unit) < 1e-9 * unit);
+    }
+    // the default shell: r_max = 1.05 x the distance from the origin to the farthest corner of bounds()
+    double far = 0;
+    for (int c = 0; c < 8; ++c)
+        far = std::max(far, glm::length(glm::dvec3(c & 1 ? 0.8 : -0.8, c & 2 ? 0.8 : -0.8, c & 4 ? 0.8 : -0.8) - st.origin));
+    CHECK(st.r_min == 0.0);
+    CHECK(std::abs(st.r_max - 1.05 * far) < 1e-12 * far);
     CHECK(std::abs(f->value(st.origin)) >= 2.0 * unit * (1 - 1e-9));
     LAB09_CHECK_CLOSED_MANIFOLD(s, "sphere, corrected origin");
     CHECK(std::abs(enclosed_volume(s) - sphere_volume(0.8)) < 0.02 * sphere_volume(0.8));

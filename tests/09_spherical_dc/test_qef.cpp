@@ -1,5 +1,7 @@
 // Lab 09, Task 1: the quadratic error function (handout §2). Every test builds Qefs with Qef::add and calls
 // Qef::solve / Qef::error, so an unimplemented stub fails them all.
+#include <Eigen/Eigenvalues>
+
 #include "helpers.hpp"
 
 using namespace lab09;
@@ -25,11 +27,46 @@ struct Planes {
         return m / double(p.size());
     }
 };
+
+// The truncated pseudo-inverse solution computed independently: Eigen's symmetric eigen-solver on AtA (summed here
+// from the planes), the right-hand side about the mass point as sum n (n . (p - m)).
+struct Reference {
+    glm::dvec3 x{0.0};
+    int rank = 0;
+    double ratio_near_threshold = 0.0;  // the eigenvalue ratio (lambda / lambda_max) nearest tau
+};
+Reference eigen_reference(const Planes& pl, double tau) {
+    Eigen::Matrix3d ata = Eigen::Matrix3d::Zero();
+    Eigen::Vector3d r = Eigen::Vector3d::Zero();
+    const glm::dvec3 m = pl.mass();
+    for (std::size_t i = 0; i < pl.p.size(); ++i) {
+        const Eigen::Vector3d n(pl.n[i].x, pl.n[i].y, pl.n[i].z);
+        ata += n * n.transpose();
+        r += n * glm::dot(pl.n[i], pl.p[i] - m);
+    }
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(ata);
+    const Eigen::Vector3d lambda = es.eigenvalues();
+    const double lmax = lambda.cwiseAbs().maxCoeff();
+    Reference out;
+    out.x = m;
+    double nearest = 1e300;
+    for (int i = 0; i < 3; ++i) {
+        const double ratio = lambda(i) / lmax;
+        if (std::abs(ratio - tau) < std::abs(nearest - tau)) nearest = ratio;
+        if (lambda(i) < tau * lmax) continue;
+        const Eigen::Vector3d e = es.eigenvectors().col(i);
+        const double c = e.dot(r) / lambda(i);
+        out.x += c * glm::dvec3(e(0), e(1), e(2));
+        ++out.rank;
+    }
+    out.ratio_near_threshold = nearest;
+    return out;
+}
 }  // namespace
 
 TEST_SUITE("Task 1: QEF") {
 
-TEST_CASE("qef: rank 1 near-planar data gives the mass point projected onto the plane" * geolab::points(2) *
+TEST_CASE("qef: rank 1 near-planar data gives the mass point projected onto the plane" * geolab::points(1) *
           geolab::hint("tau = 0.01 truncates every eigenvalue of AtA below 0.01 * lambda_max: a (nearly) flat patch "
                        "has rank 1, and the solution must not drift along the plane. Solve about the mass point m: "
                        "x = m + (AtA)+ (Atb - AtA m). Handout §2.2.")) {
@@ -161,7 +198,66 @@ TEST_CASE("qef: cone tips: a sharp tip is kept (rank 3); a needle or a nearly fl
     }
 }
 
-TEST_CASE("qef: error(x) equals the brute-force sum of squares; accumulated in double" * geolab::points(2) *
+TEST_CASE("qef: near-planar and near-threshold data match an independent eigen-solver (Eigen) to 1e-9 of the cell" *
+          geolab::points(2) *
+          geolab::hint("Truncated pseudo-inverse about the mass point: x = m + sum over kept eigenpairs of "
+                       "e (e . (Atb - AtA m)) / lambda, kept when lambda >= tau * lambda_max. Near-planar data (normals "
+                       "tilted slightly around a slanted plane) have two tiny eigenvalues: any shortcut for that case "
+                       "(rank 1) must give the same point as the full decomposition. Eigenvalue ratios 2% on either side "
+                       "of tau decide the rank. Handout §1.")) {
+    // normals n0 + tilt (ea cos(phi) a + eb sin(phi) b), normalised: eigenvalue ratios about ea^2 / 2 and eb^2 / 2
+    Lcg rng(2024);
+    int checked = 0, ranks[4] = {0, 0, 0, 0};
+    for (const glm::dvec3 base : {glm::dvec3(0.3, -0.5, 0.8), glm::dvec3(0.3, 0.5, 0.8)}) {
+    const glm::dvec3 n0 = glm::normalize(base);
+    const glm::dvec3 a = glm::normalize(glm::cross(n0, glm::dvec3(1, 0, 0))), b = glm::cross(n0, a);
+    struct Case {
+        double ratio_a, ratio_b;  // target eigenvalue ratios of the two tilt directions
+        double cell;              // the cell size the points are spread over
+    } cases[] = {{1e-12, 1e-12, 1.0}, {1e-8, 3e-9, 0.01},  {1e-5, 1e-6, 0.25},  {1e-3, 1e-3, 1.0},
+                 {2.4e-3, 2.4e-3, 0.1}, {4.4e-3, 3e-4, 1.0}, {5.6e-3, 1e-3, 0.5}, {9.0e-3, 8.0e-3, 2.0},
+                 {0.0096, 1e-4, 1.0},   {0.0106, 1e-4, 1.0}, {0.0106, 0.0096, 0.3}, {0.03, 0.0096, 1.0},
+                 {0.03, 0.0108, 0.7}};
+    for (const Case& cs : cases) {
+        Planes pl;
+        const glm::dvec3 corner(5.0, -3.0, 2.0);
+        const int count = 16;
+        const double ea = std::sqrt(2.0 * cs.ratio_a), eb = std::sqrt(2.0 * cs.ratio_b);
+        for (int i = 0; i < count; ++i) {
+            const double phi = 2.0 * kPi * (i + 0.25 * rng.uniform()) / count;
+            // points near a slanted plane through the cell, slightly curved (not all on one plane)
+            const double u = rng.uniform(), v = rng.uniform();
+            const glm::dvec3 p = corner + cs.cell * (glm::dvec3(0.5) + (u - 0.5) * a + (v - 0.5) * b +
+                                                     0.02 * (u * u + v * v - 0.5) * n0);
+            pl.add(p, n0 + ea * std::cos(phi) * a + eb * std::sin(phi) * b);
+        }
+        const double tau = 0.01;
+        const Reference ref = eigen_reference(pl, tau);
+        INFO("16 planes in a cell of size " << cs.cell << " at " << str(corner) << ", normals tilted around "
+                                            << str(n0) << " (target eigenvalue ratios " << cs.ratio_a << ", "
+                                            << cs.ratio_b << "; Eigen's ratio nearest tau " << ref.ratio_near_threshold
+                                            << ")");
+        // the test's own data must keep clear of the threshold (2% of tau)
+        REQUIRE(std::abs(ref.ratio_near_threshold - tau) > 1e-4);
+        const Qef q = pl.qef();
+        int rank = -1;
+        const glm::dvec3 x = q.solve(tau, nullptr, &rank);
+        INFO("solve returned " << str(x) << " with rank " << rank << "; Eigen's truncated pseudo-inverse gives "
+                               << str(ref.x) << " with rank " << ref.rank << " (difference "
+                               << glm::length(x - ref.x) / cs.cell << " cell)");
+        CHECK(rank == ref.rank);
+        CHECK(glm::length(x - ref.x) <= 1e-9 * cs.cell);
+        ++checked;
+        ranks[ref.rank] += 1;
+    }
+    }
+    CHECK(ranks[1] >= 18);  // the data cover ranks 1 to 3
+    CHECK(ranks[2] >= 4);
+    CHECK(ranks[3] >= 2);
+    CHECK(checked == 26);
+}
+
+TEST_CASE("qef: error(x) equals the brute-force sum of squares; accumulated in double" * geolab::points(1) *
           geolab::hint("Q(x) = xT AtA x - 2 xT Atb + btb with every sum in double (float loses everything here: "
                        "the points are near 1e4 while Q is of order 1). Handout §2.1.")) {
     Lcg rng(3);

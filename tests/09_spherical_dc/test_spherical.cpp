@@ -17,6 +17,19 @@ double unit_of(const ScalarField& f, int level) {
     const glm::dvec3 e = b.hi - b.lo;
     return std::max({e.x, e.y, e.z}) / double(1 << level);
 }
+// Nodes reachable from the root (the given data structure only).
+std::size_t reachable(const Octree& t) {
+    std::size_t n = 0;
+    std::vector<std::uint32_t> stack{0};
+    while (!stack.empty()) {
+        const std::uint32_t i = stack.back();
+        stack.pop_back();
+        ++n;
+        if (!t.nodes[i].is_leaf())
+            for (int k = 0; k < 8; ++k) stack.push_back(t.nodes[i].first_child + k);
+    }
+    return n;
+}
 // The parameter box of a node: r, theta, phi intervals.
 struct ParamBox {
     double r0, r1, t0, t1, p0, p1;
@@ -27,31 +40,11 @@ ParamBox param_box(const Octree& t, const OctreeNode& nd) {
     return {t.r_min + dr * nd.x * s / n,       t.r_min + dr * (nd.x + 1) * s / n, kPi * nd.y * s / n,
             kPi * (nd.y + 1) * s / n,          2 * kPi * nd.z * s / n,            2 * kPi * (nd.z + 1) * s / n};
 }
-}  // namespace
-
-TEST_SUITE("Task 10: spherical octree") {
-
-TEST_CASE("build_spherical_octree: cells halve r; theta and phi; refinement follows the ball rule" *
-          geolab::points(2) *
-          geolab::hint("The root is always split. A cell is split iff |f(c)| <= Lf * R, c the point at the parameter "
-                       "midpoint, R = max over r in {r_lo, r_hi} of sqrt(r2 + rc2 - 2 r rc cos(gamma)), gamma the "
-                       "largest angle between c's direction and the 4 angular corners. Handout §7.2.")) {
-    const FieldPtr f = geolab::sphere({0.2, -0.15, 0.1}, 0.6);
-    const glm::dvec3 origin(0.05, 0.02, -0.03);
-    const int L = 5;
-    const Octree t = build_spherical_octree(*f, L, origin, 0.0, 1.3);
-    const TreeShape shape = tree_shape(t);
-    INFO("sphere r = 0.6 at (0.2, -0.15, 0.1), origin " << str(origin) << ", shell [0, 1.3], level " << L << ": "
-                                                        << shape.leaves.size() << " leaves");
-    REQUIRE(t.nodes.size() > 1);
-    CHECK(t.coordinates == Coordinates::spherical);
-    CHECK(t.max_level == L);
-    CHECK(t.origin == origin);
-    CHECK(t.r_min == 0.0);
-    CHECK(t.r_max == 1.3);
-    CHECK(!t.nodes[0].is_leaf());
-    CHECK(shape.bad_children == 0);
-    CHECK(shape.deeper_than_max == 0);
+// CHECK every reachable node of a spherical tree against the ball rule with the constant lf: split iff
+// |f(c)| <= lf * R (the root always split, finest leaves not tested); and that the leaves tile the parameter box.
+void check_ball_rule(const Octree& t, const ScalarField& f, double lf) {
+    const int L = t.max_level;
+    const glm::dvec3 origin = t.origin;
     double cells = 0;  // parameter volume in finest cells
     std::size_t too_coarse = 0, too_fine = 0;
     std::ostringstream first;
@@ -72,7 +65,7 @@ TEST_CASE("build_spherical_octree: cells halve r; theta and phi; refinement foll
             for (double ph : {b.p0, b.p1}) cos_g = std::min(cos_g, glm::dot(uc, cart_of(1.0, th, ph)));
         double R = 0;
         for (double r : {b.r0, b.r1}) R = std::max(R, std::sqrt(std::max(0.0, r * r + rc * rc - 2 * r * rc * cos_g)));
-        const double v = std::abs(f->value(origin + rc * uc)), bound = f->lipschitz() * R;
+        const double v = std::abs(f.value(origin + rc * uc)), bound = lf * R;
         if (nd.is_leaf() && v <= bound * (1 - 1e-9) && too_coarse++ < 3)
             first << "\n  leaf level " << int(nd.level) << " (" << nd.x << ", " << nd.y << ", " << nd.z
                   << ") not split: |f(c)| = " << v << " <= Lf R = " << bound;
@@ -80,9 +73,68 @@ TEST_CASE("build_spherical_octree: cells halve r; theta and phi; refinement foll
             first << "\n  node level " << int(nd.level) << " (" << nd.x << ", " << nd.y << ", " << nd.z
                   << ") split although |f(c)| = " << v << " > Lf R = " << bound;
     }
+    INFO("Lipschitz constant used by the test: " << lf);
     CHECK_MESSAGE(too_coarse == 0, too_coarse << " leaves should have been split" << first.str());
     CHECK_MESSAGE(too_fine == 0, too_fine << " nodes should not have been split" << first.str());
     CHECK(cells == std::pow(double(t.resolution()), 3));
+}
+}  // namespace
+
+TEST_SUITE("Task 10: spherical octree") {
+
+TEST_CASE("build_spherical_octree: cells halve r; theta and phi; refinement follows the ball rule" *
+          geolab::points(1) *
+          geolab::hint("The root is always split. A cell is split iff |f(c)| <= Lf * R, c the point at the parameter "
+                       "midpoint, R = max over r in {r_lo, r_hi} of sqrt(r2 + rc2 - 2 r rc cos(gamma)), gamma the "
+                       "largest angle between c's direction and the 4 angular corners. Handout §7.2.")) {
+    const FieldPtr f = geolab::sphere({0.2, -0.15, 0.1}, 0.6);
+    const glm::dvec3 origin(0.05, 0.02, -0.03);
+    const int L = 5;
+    const Octree t = build_spherical_octree(*f, L, origin, 0.0, 1.3);
+    const TreeShape shape = tree_shape(t);
+    INFO("sphere r = 0.6 at (0.2, -0.15, 0.1), origin " << str(origin) << ", shell [0, 1.3], level " << L << ": "
+                                                        << shape.leaves.size() << " leaves");
+    REQUIRE(t.nodes.size() > 1);
+    CHECK(t.coordinates == Coordinates::spherical);
+    CHECK(t.max_level == L);
+    CHECK(t.origin == origin);
+    CHECK(t.r_min == 0.0);
+    CHECK(t.r_max == 1.3);
+    CHECK(!t.nodes[0].is_leaf());
+    CHECK(shape.bad_children == 0);
+    CHECK(shape.deeper_than_max == 0);
+    check_ball_rule(t, *f, f->lipschitz());
+}
+
+TEST_CASE("build_spherical_octree: lipschitz() == 0: Lf = 2 max |grad f| on the 9^3 lattice of the shell's cube" *
+          geolab::points(1) *
+          geolab::hint("Without a Lipschitz constant estimate Lf once: 2 x the largest |grad f| at the 9^3 points "
+                       "origin + r_max (i/4 - 1, j/4 - 1, k/4 - 1), i, j, k = 0..8 (the cube around the shell), then "
+                       "apply the ball rule with it. Handout §2 and §7.")) {
+    struct Case {
+        glm::dvec3 centre, origin;
+        double radius, r_max;
+        int level;
+    } cases[] = {{{0.2, -0.1, 0.05}, {0.0, 0.05, 0.0}, 0.6, 1.2, 4},
+                 {{-0.3, 0.2, 0.1}, {-0.1, 0.0, 0.02}, 0.5, 1.0, 5},
+                 {{0.05, 0.0, -0.1}, {0.0, 0.0, 0.0}, 0.7, 1.5, 4}};
+    for (const Case& cs : cases) {
+        const QuadraticBall f(cs.centre, cs.radius);
+        REQUIRE(f.lipschitz() == 0.0);
+        const Octree t = build_spherical_octree(f, cs.level, cs.origin, 0.0, cs.r_max);
+        REQUIRE(t.nodes.size() > 1);
+        const double lf = f.estimate(cs.origin - cs.r_max, 2.0 * cs.r_max);
+        INFO("f = |p - c|^2 - R^2 (no Lipschitz constant), c = " << str(cs.centre) << ", R = " << cs.radius
+                                                                  << ", origin " << str(cs.origin) << ", shell [0, "
+                                                                  << cs.r_max << "], level " << cs.level
+                                                                  << ": expected Lf = " << lf);
+        check_ball_rule(t, f, lf);
+    }
+    // a signed distance without a constant: |grad f| = 1 everywhere, Lf = 2
+    const NoLipschitz g(geolab::sphere({0.1, 0.0, -0.1}, 0.7));
+    const Octree u = build_spherical_octree(g, 4, glm::dvec3(0.0), 0.0, 1.2);
+    INFO("sphere distance without lipschitz(), level 4: expected Lf = 2");
+    check_ball_rule(u, g, 2.0);
 }
 
 TEST_CASE("build_spherical_octree: every finest cell the surface passes through is a leaf at max level" *
@@ -264,7 +316,7 @@ TEST_CASE("place_vertices (spherical): each QEF holds its own cell's crossings; 
         }
 }
 
-TEST_CASE("dual_contour_spherical: a sphere across the phi = 0 seam leaves no crack" * geolab::points(2) *
+TEST_CASE("dual_contour_spherical: a sphere across the phi = 0 seam leaves no crack" * geolab::points(1) *
           geolab::hint("The lattice's phi index is taken modulo N: the cells at phi index N-1 and 0 are neighbours "
                        "(Octree::canonical / locate wrap it). Look up the 4 leaves around an edge with the wrapped "
                        "index. Handout §7.4.")) {
@@ -322,9 +374,76 @@ TEST_CASE("dual_contour_spherical: a sphere needs fewer vertices than on the Car
     }
 }
 
+TEST_CASE("dual_contour_spherical: surfaces crossing the first shells above the origin or r_min are closed; DcStats" *
+          geolab::points(1) *
+          geolab::hint("Only edges ON the inner sphere (r index 0) have no cells below them: skip those, and nothing "
+                       "at r index 1 or above. DcStats: cells = reachable nodes, leaves = reachable leaves of the tree "
+                       "that was contoured; crossings = what place_vertices returned. Handout §7.")) {
+    struct Case {
+        glm::dvec3 centre;
+        double radius, r_min, r_max;
+        int level;
+        const char* what;
+    } cases[] = {
+        {{0.03, 0.02, 0.04}, 0.1, 0.0, 1.0, 4, "sphere around the origin, r from 0.046 to 0.154 (shell 1 at 0.0625)"},
+        {{0.08, 0.0, 0.02}, 0.06, 0.0, 1.0, 4, "sphere beside the origin, r from 0.022 to 0.142 (shell 1 at 0.0625)"},
+        {{0.01, 0.012, -0.008}, 0.04, 0.0, 1.0, 5, "sphere around the origin, r from 0.022 to 0.058 (shell 1 at 0.031)"},
+        {{0.02, -0.01, 0.015}, 0.54, 0.5, 1.0, 4, "r_min 0.5: sphere r from 0.513 to 0.567 (shell 1 at 0.531)"},
+        {{0.02, -0.01, 0.015}, 0.54, 0.5, 1.0, 5, "r_min 0.5: sphere r from 0.513 to 0.567 (shell 1 at 0.516)"},
+    };
+    for (const Case& cs : cases) {
+        const FieldPtr f = geolab::sphere(cs.centre, cs.radius);
+        SphericalParams p;
+        p.max_level = cs.level;
+        p.origin = glm::dvec3(0.0);
+        p.correct_origin = false;
+        p.r_min = cs.r_min;
+        p.r_max = cs.r_max;
+        DcStats st;
+        const PolygonSoup s = dual_contour_spherical(*f, p, &st);
+        const std::string label = std::string(cs.what) + ", origin 0, shell [" + std::to_string(cs.r_min) + ", " +
+                                  std::to_string(cs.r_max) + "], level " + std::to_string(cs.level);
+        INFO(label);
+        // the test's own check that the surface really crosses shell 1 (some lattice point inside, some outside)
+        const double shell1 = cs.r_min + (cs.r_max - cs.r_min) / (1 << cs.level);
+        int in = 0, out = 0;
+        for (int i = 0; i < 64; ++i)
+            for (int j = 0; j <= 16; ++j) {
+                const double v = f->value(cart_of(shell1, kPi * j / 16, 2 * kPi * i / 64));
+                (v <= 0 ? in : out) += 1;
+            }
+        REQUIRE(in > 0);
+        REQUIRE(out > 0);
+        LAB09_CHECK_CLOSED_MANIFOLD(s, label);
+        CHECK(components(s) == 1);
+        CHECK(edge_report(s).euler() == 2);
+        CHECK(enclosed_volume(s) > 0);
+        // DcStats against the same chain run step by step
+        Octree t = build_spherical_octree(*f, cs.level, st.origin, st.r_min, st.r_max);
+        const std::size_t crossings = place_vertices(t, {p.tau, p.crossing_tolerance});
+        std::vector<PoleRing> rings;
+        const PolygonSoup s2 = contour(t, &rings);
+        INFO("DcStats: cells " << st.cells << ", leaves " << st.leaves << ", samples " << st.samples << ", crossings "
+                               << st.crossings << ", rings " << st.pole_rings << "; the tree: " << reachable(t)
+                               << " nodes, " << tree_shape(t).leaves.size() << " leaves, " << t.samples()
+                               << " samples, " << crossings << " crossings, " << rings.size() << " rings");
+        CHECK(st.origin == glm::dvec3(0.0));
+        CHECK(st.r_min == cs.r_min);
+        CHECK(st.r_max == cs.r_max);
+        CHECK(st.cells == reachable(t));
+        CHECK(st.leaves == tree_shape(t).leaves.size());
+        CHECK(st.samples == t.samples());
+        CHECK(st.crossings == crossings);
+        CHECK(st.pole_rings == rings.size());
+        CHECK(st.vertices == s.n_vertices());
+        CHECK(st.faces == s.n_faces());
+        CHECK(s.n_faces() == s2.n_faces() + st.pole_fill.n_faces);
+    }
+}
+
 TEST_CASE("build_spherical_octree and dual_contour_spherical: bad parameters throw std::invalid_argument" *
           geolab::points(1) *
-          geolab::hint("max_level in [1, 10], 0 <= r_min < r_max. Handout §7.1.")) {
+          geolab::hint("max_level in [1, 10] (both ends accepted), 0 <= r_min < r_max. Handout §7.1.")) {
     const FieldPtr f = geolab::sphere({0, 0, 0}, 0.5);
     const Octree ok = build_spherical_octree(*f, 3, glm::dvec3(0.0), 0.0, 1.0);
     REQUIRE(ok.nodes.size() > 1);
@@ -338,6 +457,28 @@ TEST_CASE("build_spherical_octree and dual_contour_spherical: bad parameters thr
     REQUIRE(dual_contour_spherical(*f, p).n_faces() > 0);
     p.max_level = 11;
     CHECK_THROWS_AS(dual_contour_spherical(*f, p), std::invalid_argument);
+    p.max_level = 0;
+    CHECK_THROWS_AS(dual_contour_spherical(*f, p), std::invalid_argument);
+    // 1 and 10 are accepted (level 10 around a sphere of radius 0.01 away from the origin: a small tree)
+    const TinySphere tiny({0.3, -0.2, 0.1}, 0.01);
+    Octree ten;
+    CHECK_NOTHROW(ten = build_spherical_octree(tiny, 10, glm::dvec3(0.0), 0.0, 1.0));
+    CHECK(ten.max_level == 10);
+    const std::uint32_t leaf = leaf_at(ten, {0.3, -0.2, 0.11});
+    REQUIRE(leaf != invalid_index);
+    CHECK(int(ten.nodes[leaf].level) == 10);
+    for (int level : {1, 10}) {
+        SphericalParams q;
+        q.max_level = level;
+        q.origin = glm::dvec3(0.0);
+        q.correct_origin = false;
+        q.r_max = 1.0;
+        PolygonSoup s;
+        CHECK_NOTHROW(s = dual_contour_spherical(level == 1 ? *f : static_cast<const ScalarField&>(tiny), q));
+        INFO("level " << level << ": " << describe(edge_report(s)));
+        CHECK(s.n_faces() > 0);
+        if (level == 10) LAB09_CHECK_CLOSED_MANIFOLD(s, "tiny sphere r = 0.01 at (0.3, -0.2, 0.1), level 10");
+    }
     p.max_level = 3;
     p.r_min = 2.0;
     p.r_max = 1.0;
@@ -376,7 +517,7 @@ TEST_CASE("dual_contour_spherical: normal_projection closes both poles (2 rings;
     }
 }
 
-TEST_CASE("dual_contour_spherical: vertical_projection also closes; none leaves exactly 2 holes" * geolab::points(2) *
+TEST_CASE("dual_contour_spherical: vertical_projection also closes; none leaves exactly 2 holes" * geolab::points(1) *
           geolab::hint("PoleFill::none adds nothing: the mesh then has one boundary loop around each pole (and no "
                        "other defect). vertical_projection is the earlier ghost node: a flat cap at the ring's mean "
                        "height. Handout §8.")) {
@@ -384,6 +525,17 @@ TEST_CASE("dual_contour_spherical: vertical_projection also closes; none leaves 
     DcStats sv, sn;
     const PolygonSoup v = spherical(*f, 5, PoleFill::vertical_projection, &sv);
     const PolygonSoup n = spherical(*f, 5, PoleFill::none, &sn);
+    // no origin given: the walk starts at the centre of bounds()
+    REQUIRE(!sv.origin_path.empty());
+    CHECK(glm::length(sv.origin_path.front() - f->bounds().center()) < 1e-15);
+    // the default shell: 1.05 x the distance from the origin used to the farthest corner of bounds()
+    double far = 0;
+    const Box bb = f->bounds();
+    for (int c = 0; c < 8; ++c)
+        far = std::max(far, glm::length(glm::dvec3(c & 1 ? bb.hi.x : bb.lo.x, c & 2 ? bb.hi.y : bb.lo.y,
+                                                   c & 4 ? bb.hi.z : bb.lo.z) - sv.origin));
+    INFO("r_max " << sv.r_max << ", expected 1.05 x " << far << " (origin " << str(sv.origin) << ")");
+    CHECK(std::abs(sv.r_max - 1.05 * far) < 1e-12 * far);
     LAB09_CHECK_CLOSED_MANIFOLD(v, "sphere level 5, vertical projection");
     CHECK(sv.ghost_vertices == 2);
     const EdgeReport r = edge_report(n);
@@ -397,6 +549,64 @@ TEST_CASE("dual_contour_spherical: vertical_projection also closes; none leaves 
     CHECK(sn.ghost_vertices == 0);
     CHECK(n.n_faces() + 2 * 0 < v.n_faces());
     CHECK(v.n_faces() - n.n_faces() == r.boundary);  // one fan triangle per boundary edge
+}
+
+TEST_CASE("fill_poles: a ring of 2 vertices is already closed: no ghost and no fan (level 1 stays a closed manifold)" *
+          geolab::points(1) *
+          geolab::hint("At level 1 there are 2 phi cells: the ring around an axis edge has 2 vertices, and the 'hole' "
+                       "is bounded twice by the one edge {ring[0], ring[1]}, which two faces already share. A fan "
+                       "(ghost, r0, r1), (ghost, r1, r0) would put that edge into 4 faces. Rings of fewer than 3 "
+                       "vertices get no ghost. Handout §8.")) {
+    // the whole pipeline at level 1: 2 rings of 2 vertices each, closed with any fill
+    const std::pair<FieldPtr, const char*> shapes[] = {
+        {geolab::sphere({0.05, -0.02, 0.03}, 0.8), "sphere r = 0.8 at (0.05, -0.02, 0.03)"},
+        {geolab::sphere({-0.1, 0.15, -0.05}, 0.6), "sphere r = 0.6 at (-0.1, 0.15, -0.05)"}};
+    for (const auto& [f, name_c] : shapes) {
+        const std::string name(name_c);
+        std::size_t faces_none = 0;
+        for (auto method : {PoleFill::none, PoleFill::normal_projection, PoleFill::vertical_projection}) {
+            DcStats st;
+            const PolygonSoup s = spherical(*f, 1, method, &st);
+            INFO(name << ", level 1, fill " << int(method) << ": " << st.pole_rings << " rings, " << st.ghost_vertices
+                      << " ghosts");
+            LAB09_CHECK_CLOSED_MANIFOLD(s, name);
+            CHECK(st.pole_rings == 2);
+            CHECK(st.ghost_vertices == 0);
+            CHECK(st.pole_fill.n_faces == 0);
+            if (method == PoleFill::none) faces_none = s.n_faces();
+            else CHECK(s.n_faces() == faces_none);
+        }
+    }
+    // hand-built rings of 1, 2 and 3 vertices: only the third is filled
+    const glm::dvec3 o(0.1, 0.0, -0.2);
+    const FieldPtr f = geolab::sphere(o, 1.0);
+    PolygonSoup soup;
+    std::vector<PoleRing> rings;
+    for (int size : {1, 2, 3}) {
+        PoleRing pr;
+        pr.north = size != 2;
+        pr.r_lo = 0.5;
+        pr.r_hi = 1.5;
+        for (int i = 0; i < size; ++i) {
+            const double phi = 2 * kPi * i / size;
+            pr.ring.push_back(std::uint32_t(soup.positions.size()));
+            soup.positions.push_back(o + glm::dvec3(0.3 * std::cos(phi), 0.3 * std::sin(phi), pr.north ? 0.95 : -0.95));
+        }
+        rings.push_back(pr);
+    }
+    for (auto method : {PoleFill::normal_projection, PoleFill::vertical_projection}) {
+        PolygonSoup out = soup;
+        const PoleFillResult r = fill_poles(out, rings, *f, o, method);
+        INFO("rings of 1, 2 and 3 vertices, fill " << int(method) << ": " << r.ghost_vertices.size() << " ghosts, "
+                                                   << r.n_faces << " faces, " << r.ring_vertices.size()
+                                                   << " ring vertices listed");
+        REQUIRE(r.ghost_vertices.size() == 1);
+        CHECK(r.n_faces == 3);
+        CHECK(out.n_faces() == 3);
+        CHECK(out.n_vertices() == soup.n_vertices() + 1);
+        CHECK(r.ring_vertices == rings[2].ring);
+        CHECK(r.ghost_vertices[0] == soup.n_vertices());
+    }
 }
 
 TEST_CASE("fill_poles: hand-built rings get the ghost where the tangent planes meet; clamped; fans outward" *

@@ -16,7 +16,9 @@ PoleFillResult fill_poles(PolygonSoup& soup, std::span<const PoleRing> rings, co
     out.first_face = soup.n_faces();
     if (method == PoleFill::none) return out;
     for (const PoleRing& pr : rings) {
-        if (pr.ring.size() < 2) continue;
+        // a ring of 2 vertices bounds a hole whose two sides are the one edge {ring[0], ring[1]}, already shared by
+        // two faces: the mesh is closed there, and a fan would put that edge into 4 faces
+        if (pr.ring.size() < 3) continue;
         const glm::dvec3 axis(0.0, 0.0, pr.north ? 1.0 : -1.0);
         // vertical projection: the mean axial coordinate of the ring
         double s_vertical = 0.0;

@@ -642,7 +642,7 @@ Octree build_spherical_octree(const ScalarField& f, int max_level, const glm::dv
 
 //! What fill_poles added, for the demo to colour.
 struct PoleFillResult {
-    std::vector<std::uint32_t> ghost_vertices;  //!< one per ring, appended to soup.positions
+    std::vector<std::uint32_t> ghost_vertices;  //!< one per ring filled (≥ 3 vertices), appended to soup.positions
     std::vector<std::uint32_t> ring_vertices;   //!< the hole boundaries (all rings, concatenated)
     std::size_t first_face = 0, n_faces = 0;    //!< the fan triangles are faces [first_face, first_face + n_faces)
 };
@@ -655,6 +655,9 @@ struct PoleFillResult {
 //!    vertical_projection when Σ (nᵢ·a)² < 1e-12 · ring size;
 //!  - vertical_projection: s* = mean of a·(vᵢ − o) (each vertex projected perpendicularly onto the axis);
 //! then clamped to [r_lo, r_hi] of the ring's axis edge (the ghost stays in the ring's cells, like a DC vertex).
+//! Rings of fewer than 3 vertices are left alone (no ghost, no faces, not listed in ring_vertices): a 2-vertex
+//! ring (level 1: two φ cells) bounds a "hole" whose two sides are the same edge {ring[0], ring[1]}, already
+//! shared by two faces, so the mesh is closed there and a fan would make that edge non-manifold.
 //! Method none adds nothing. \pre the field gradient is defined near the ring (normal_projection).
 PoleFillResult fill_poles(PolygonSoup& soup, std::span<const PoleRing> rings, const ScalarField& f,
                           const glm::dvec3& origin, PoleFill::Method method);
