@@ -6,6 +6,44 @@
 #   test_NN_name, test_NN_name_solution   (with a GEOLAB_BOUNDARY list: the performers, which record)
 #   judge_NN_name                         (with a GEOLAB_BOUNDARY list: tests + given code + replay, no student code)
 # plus the lab's demo (labs/NN_name/demo.cpp) linked against GEOLAB_VARIANT_<NN>, the variant the program uses.
+# geolab_add_boundary(ID API_HEADER INCLUDE_DIR OUT_DIR)
+# The record and replay thunks of the GEOLAB_BOUNDARY list in API_HEADER (a header under INCLUDE_DIR):
+#   OUT_DIR/recorder.o  the performer's (each thunk defines a student function, records, calls geolab_student_LINE)
+#   OUT_DIR/replayer.o  the judge's (each thunk defines a student function and answers from the recording)
+#   OUT_DIR/student.syms  the renaming of the student's objects (objcopy --redefine-syms)
+function(geolab_add_boundary id api_header include_dir bdir)
+  file(RELATIVE_PATH api_rel ${include_dir} ${api_header})
+  foreach(role record replay)
+    add_library(boundary_${id}_${role} OBJECT ${PROJECT_SOURCE_DIR}/lib/src/grading/boundary_shim.cpp)
+    target_compile_definitions(boundary_${id}_${role} PRIVATE GEOLAB_BOUNDARY_ROLE=${role}
+                                                              "GEOLAB_LAB_HEADER=<${api_rel}>")
+    target_include_directories(boundary_${id}_${role} PRIVATE ${include_dir})
+    target_link_libraries(boundary_${id}_${role} PRIVATE geolab::core doctest::doctest)
+  endforeach()
+  target_compile_definitions(boundary_${id}_replay PRIVATE _GLIBCXX_ASSERTIONS)
+  add_custom_command(
+    OUTPUT ${bdir}/recorder.o ${bdir}/replayer.o ${bdir}/student.syms
+    COMMAND ${CMAKE_COMMAND} -DMODE=shims "-DRECORD=$<TARGET_OBJECTS:boundary_${id}_record>"
+            "-DREPLAY=$<TARGET_OBJECTS:boundary_${id}_replay>" -DOUT=${bdir} -DOBJDUMP=${CMAKE_OBJDUMP}
+            -DOBJCOPY=${CMAKE_OBJCOPY} -P ${PROJECT_SOURCE_DIR}/cmake/GeolabBoundary.cmake
+    DEPENDS boundary_${id}_record boundary_${id}_replay "$<TARGET_OBJECTS:boundary_${id}_record>"
+            "$<TARGET_OBJECTS:boundary_${id}_replay>" ${PROJECT_SOURCE_DIR}/cmake/GeolabBoundary.cmake
+    COMMENT "boundary ${id}: record and replay thunks")
+  set_source_files_properties(${bdir}/recorder.o ${bdir}/replayer.o PROPERTIES EXTERNAL_OBJECT TRUE GENERATED TRUE)
+endfunction()
+
+# geolab_performer_library(LIB OUT_DIR): OUT_DIR/libLIB_performer.a, the static library LIB with each boundary
+# function renamed to geolab_student_LINE (definitions and the calls among them), and a target LIB_performer.
+function(geolab_performer_library v bdir)
+  add_custom_command(
+    OUTPUT ${bdir}/lib${v}_performer.a
+    COMMAND ${CMAKE_COMMAND} -DMODE=rename "-DIN=$<TARGET_FILE:${v}>" -DOUT=${bdir}/lib${v}_performer.a
+            -DSYMS=${bdir}/student.syms -DOBJCOPY=${CMAKE_OBJCOPY} -P ${PROJECT_SOURCE_DIR}/cmake/GeolabBoundary.cmake
+    DEPENDS ${v} "$<TARGET_FILE:${v}>" ${bdir}/student.syms
+    COMMENT "${v} for the performer")
+  add_custom_target(${v}_performer DEPENDS ${bdir}/lib${v}_performer.a)
+endfunction()
+
 function(geolab_add_lab lab)
   string(SUBSTRING ${lab} 0 2 nn)
   set(lab_dir ${PROJECT_SOURCE_DIR}/labs/${lab})
@@ -42,25 +80,8 @@ function(geolab_add_lab lab)
     # Record and replay (docs/architecture.md): the performers test_NN_name[_solution] run the student's (or the
     # reference) code and record every call across the boundary; the judge judge_NN_name, with the same tests,
     # the lab's given code and no student code, replays the recording and decides the verdict.
-    file(RELATIVE_PATH api_rel ${lab_dir}/include ${api_header})
     set(bdir ${PROJECT_BINARY_DIR}/boundary/${lab})
-    foreach(role record replay)
-      add_library(boundary_${nn}_${role} OBJECT ${PROJECT_SOURCE_DIR}/lib/src/grading/boundary_shim.cpp)
-      target_compile_definitions(boundary_${nn}_${role} PRIVATE GEOLAB_BOUNDARY_ROLE=${role}
-                                                                "GEOLAB_LAB_HEADER=<${api_rel}>")
-      target_include_directories(boundary_${nn}_${role} PRIVATE ${lab_dir}/include)
-      target_link_libraries(boundary_${nn}_${role} PRIVATE geolab::core doctest::doctest)
-    endforeach()
-    target_compile_definitions(boundary_${nn}_replay PRIVATE _GLIBCXX_ASSERTIONS)
-    add_custom_command(
-      OUTPUT ${bdir}/recorder.o ${bdir}/replayer.o ${bdir}/student.syms
-      COMMAND ${CMAKE_COMMAND} -DMODE=shims "-DRECORD=$<TARGET_OBJECTS:boundary_${nn}_record>"
-              "-DREPLAY=$<TARGET_OBJECTS:boundary_${nn}_replay>" -DOUT=${bdir} -DOBJDUMP=${CMAKE_OBJDUMP}
-              -DOBJCOPY=${CMAKE_OBJCOPY} -P ${PROJECT_SOURCE_DIR}/cmake/GeolabBoundary.cmake
-      DEPENDS boundary_${nn}_record boundary_${nn}_replay "$<TARGET_OBJECTS:boundary_${nn}_record>"
-              "$<TARGET_OBJECTS:boundary_${nn}_replay>" ${PROJECT_SOURCE_DIR}/cmake/GeolabBoundary.cmake
-      COMMENT "lab ${nn}: record and replay thunks")
-    set_source_files_properties(${bdir}/recorder.o ${bdir}/replayer.o PROPERTIES EXTERNAL_OBJECT TRUE GENERATED TRUE)
+    geolab_add_boundary(${nn} ${api_header} ${lab_dir}/include ${bdir})
 
     # The tests, compiled once for both performers.
     add_library(tests_${nn} OBJECT ${test_src})
@@ -72,14 +93,7 @@ function(geolab_add_lab lab)
       list(APPEND lab_variants lab_${nn}_sol)
     endif()
     foreach(v IN LISTS lab_variants)
-      # The variant's objects with each boundary function renamed to geolab_student_LINE (calls among them too).
-      add_custom_command(
-        OUTPUT ${bdir}/lib${v}_performer.a
-        COMMAND ${CMAKE_COMMAND} -DMODE=rename "-DIN=$<TARGET_FILE:${v}>" -DOUT=${bdir}/lib${v}_performer.a
-                -DSYMS=${bdir}/student.syms -DOBJCOPY=${CMAKE_OBJCOPY} -P ${PROJECT_SOURCE_DIR}/cmake/GeolabBoundary.cmake
-        DEPENDS ${v} "$<TARGET_FILE:${v}>" ${bdir}/student.syms
-        COMMENT "lab ${nn}: ${v} for the performer")
-      add_custom_target(${v}_performer DEPENDS ${bdir}/lib${v}_performer.a)
+      geolab_performer_library(${v} ${bdir})
       if(v STREQUAL "lab_${nn}")
         set(program test_${lab})
       else()
