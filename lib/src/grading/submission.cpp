@@ -279,6 +279,9 @@ std::string SubmissionReport::summary() const {
     for (const auto& f : forbidden)
         os << "forbidden call: " << f.file << " calls " << f.symbol << (f.reason.empty() ? "" : " (" + f.reason + ")")
            << (f.task.empty() ? "" : "; task '" + f.task + "' scores 0") << "\n";
+    if (status == SubmissionStatus::ok && !lab.isolated)
+        os << "verdict not isolated: this lab has no GEOLAB_BOUNDARY list, so its test program (with your code in "
+              "it) decided its own verdicts\n";
     if (status == SubmissionStatus::compile_error) os << "\nYour code did not compile; every test scores 0.\n";
     if (!compiler_output.empty()) os << "\n--- compiler messages ---\n" << compiler_output << "\n";
     return os.str();

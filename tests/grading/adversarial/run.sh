@@ -5,6 +5,8 @@
 #   full           the attack is harmless and the code is right: the full score
 #   stub           the code does not do its job: exactly the score of the reference with smoothing.cpp left a stub
 #   compile_error  score 0, status "compile error", the compiler's message in results.json
+# The forge_* cases try to forge the verdict from inside the process that runs the student's code (issue 12):
+# record and replay must leave each exactly its honest score.
 # Afterwards: no process of the sandbox uids is left, nothing was written into the course tree or the build.
 # Usage: run.sh GEOLAB SOURCE_DIR BUILD_DIR
 set -uo pipefail
@@ -20,7 +22,9 @@ max_of() { grep -m1 '^  "max_score"' "$1" | sed 's/[^0-9.]//g'; }
 same() { awk -v a="$1" -v b="$2" 'BEGIN { exit !(a != "" && b != "" && a + 0 == b + 0) }'; }
 grade() {  # grade DIR NAME [extra args]: writes $out/NAME.json and NAME.log
   local dir=$1 name=$2; shift 2
-  "$geolab" grade --submission "$dir" --lab 01 --json "$out/$name.json" --work-dir "$work" --no-course-build \
+  # A wall-clock cap of its own: a submission that makes the grader run on (per-test limits taken from the
+  # student's process, forge_timeout) fails here instead of hanging CI.
+  timeout -s KILL 600 "$geolab" grade --submission "$dir" --lab 01 --json "$out/$name.json" --work-dir "$work" --no-course-build \
     --timeout 5 --memory-mb 512 -q "$@" >"$out/$name.log" 2>&1
 }
 sum_before=$(md5sum "$build/bin/test_01_halfedge" | cut -d' ' -f1)

@@ -6,12 +6,14 @@
 #include <unistd.h>
 
 #include "geolab/errors.hpp"
-#include "geolab/grading/wire.hpp"
+#include "geolab/grading/boundary_calls.hpp"
 #include "replay_fixture.hpp"
 
 namespace replay_fixture {
 namespace {
-void raw(geolab::wire::Writer& w) { (void)!::write(3, w.buffer().data(), w.buffer().size()); }
+// The recording's descriptor, as any code in the performer can find it (here: from the channel in memory).
+int record_fd() { return geolab::boundary::channel().data_fd; }
+void raw(geolab::wire::Writer& w) { (void)!::write(record_fd(), w.buffer().data(), w.buffer().size()); }
 }  // namespace
 
 int add(int a, int b) { return a + b; }
@@ -38,7 +40,7 @@ int hang_in_call(int) {
 }
 int forge_record(int x) {
     const char junk[] = "passed passed passed";
-    (void)!::write(3, junk, sizeof junk);
+    (void)!::write(record_fd(), junk, sizeof junk);
     return x;
 }
 std::vector<int> huge_count(int) {
