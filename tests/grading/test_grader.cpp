@@ -258,3 +258,73 @@ TEST_CASE("the sandbox shows only its allow-list, a private /tmp, a clean enviro
     fs::remove(fs::temp_directory_path() / "geolab_grader_test_marker");
     ::unsetenv("GEOLAB_GRADER_TEST_CANARY");
 }
+
+// ---- record and replay (replay_fixture/): the judge decides, from what the performer's calls returned ----------
+#if defined(GEOLAB_REPLAY_PERFORMER) && defined(GEOLAB_REPLAY_JUDGE)
+namespace {
+const geolab::grading::LabReport& replay_report() {
+    static const geolab::grading::LabReport report = [] {
+        geolab::grading::RunOptions opt;
+        opt.timeout_s = 10;
+        opt.memory_mb = 1024;
+        opt.judge = GEOLAB_REPLAY_JUDGE;
+        return geolab::grading::grade_program("replay_fixture", "student", GEOLAB_REPLAY_PERFORMER, opt);
+    }();
+    return report;
+}
+const geolab::grading::TestResult& replayed(const std::string& name) {
+    for (const auto& r : replay_report().results)
+        if (r.info.name == name) return r;
+    FAIL("no result for " << name);
+    throw 0;
+}
+bool says(const geolab::grading::TestResult& r, const std::string& part) {
+    for (const auto& m : r.messages)
+        if (m.find(part) != std::string::npos) return true;
+    return false;
+}
+}  // namespace
+
+TEST_CASE("record and replay: the judge lists the tests and decides each verdict") {
+    const auto& rep = replay_report();
+    REQUIRE(rep.error == "");
+    CHECK(rep.isolated);
+    CHECK(rep.results.size() == 12);
+    CHECK(replayed("a timed call is timed by the judge").info.hidden);
+    CHECK(replayed("hangs in a call").info.timeout_s == 1);
+    const std::map<std::string, Status> expected = {
+        {"right answers pass", Status::passed},
+        {"a wrong answer fails", Status::failed},
+        {"not implemented", Status::not_implemented},
+        {"crashes in its second call", Status::crashed},
+        {"exits in a call", Status::error},
+        {"hangs in a call", Status::timeout},
+        {"forges bytes on the record pipe", Status::failed},
+        {"claims a vector larger than the recording", Status::failed},
+        {"a timed call is timed by the judge", Status::passed},
+        {"answers a timed call before it starts", Status::failed},
+        {"calls among the student's functions are not recorded", Status::passed},
+        {"an index out of range stops the judge", Status::failed},
+    };
+    for (const auto& [name, status] : expected) {
+        const auto& r = replayed(name);
+        CAPTURE(name);
+        CAPTURE(geolab::grading::first_message(r));
+        CHECK(std::string(to_string(r.status)) == std::string(to_string(status)));
+        CHECK(r.score == (status == Status::passed ? r.info.points : 0.0));
+    }
+}
+
+TEST_CASE("record and replay: messages name the call the student's program was in") {
+    CHECK(says(replayed("crashes in its second call"), "SIGSEGV"));
+    CHECK(says(replayed("crashes in its second call"), "call 2 (crash_in_call)"));
+    CHECK(says(replayed("exits in a call"), "call 1 (exit_in_call)"));
+    CHECK(says(replayed("hangs in a call"), "hang_in_call"));
+    CHECK(says(replayed("forges bytes on the record pipe"), "does not match call 1 (forge_record)"));
+    CHECK(says(replayed("claims a vector larger than the recording"), "exceeds what the recording holds"));
+    CHECK(says(replayed("answers a timed call before it starts"), "before the grader let the call start"));
+    CHECK(says(replayed("an index out of range stops the judge"), "the test stopped on your code's answers"));
+    CHECK(says(replayed("not implemented"), "not implemented: not_written"));
+    CHECK(replayed("hangs in a call").seconds < 5);
+}
+#endif

@@ -117,7 +117,12 @@ int run_grade(const GradeArgs& a) {
     for (const auto& lab : labs) {
         const auto program = bin_dir() / ("test_" + lab + (a.solutions ? "_solution" : ""));
         if (!a.quiet) std::cerr << "grading " << lab << " (" << variant << ") ...\n";
-        reports.push_back(grading::grade_program(lab, variant, program, opt));
+        grading::RunOptions lab_opt = opt;
+        // Record and replay: the lab's judge lists the tests and decides every verdict (docs/architecture.md).
+        if (const auto judge = bin_dir() / ("judge_" + lab); std::filesystem::exists(judge)) lab_opt.judge = judge;
+        else std::cerr << "warning: " << lab << " has no judge (no GEOLAB_BOUNDARY list): its verdicts are decided by "
+                       << "the program that runs the tested code (verdict not isolated)\n";
+        reports.push_back(grading::grade_program(lab, variant, program, lab_opt));
         if (tty && !a.quiet) std::cerr << "\n";
     }
     grading::print_console(std::cout, reports,

@@ -8,6 +8,8 @@
 
 #include <glm/vec3.hpp>
 
+#include "geolab/boundary.hpp"
+
 namespace geolab {
 
 //! Positions and polygonal faces. Face f has the vertex indices
@@ -17,6 +19,7 @@ struct PolygonSoup {
     std::vector<glm::dvec3> positions;
     std::vector<std::uint32_t> indices;
     std::vector<std::uint32_t> offsets{0};
+    GEOLAB_FIELDS(positions, indices, offsets)  // what crosses the grading boundary (geolab/boundary.hpp)
 
     std::size_t n_vertices() const { return positions.size(); }
     std::size_t n_faces() const { return offsets.size() - 1; }

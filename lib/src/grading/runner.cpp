@@ -7,6 +7,7 @@
 #include <csignal>
 #include <cstring>
 #include <fstream>
+#include <functional>
 #include <mutex>
 #include <optional>
 #include <sstream>
@@ -417,10 +418,12 @@ void kill_everything(pid_t test_pid, unsigned uid) {
     }
 }
 
-// Run argv under a supervisor with the limits of `opt`; the verdict pipe's write end is passed as
-// GEOLAB_RESULT_FD together with GEOLAB_TOKEN=token (when token is non-empty).
+// Run argv under a supervisor with the limits of `opt`. `extra_fds` become the child's fds 3, 4, ... (record
+// and replay pipes); the verdict pipe's write end follows them and is passed as GEOLAB_RESULT_FD together with
+// GEOLAB_TOKEN=token (when token is non-empty). `forked` is called in the grader once the supervisor exists.
 ChildOutcome run_child(const std::vector<std::string>& argv, const std::string& token, double timeout_s,
-                       const RunOptions& opt, rlim_t memory_mb) {
+                       const RunOptions& opt, rlim_t memory_mb, const std::vector<int>& extra_fds = {},
+                       const std::function<void()>& forked = {}) {
     ChildOutcome out;
     const Sandbox& sb = opt.sandbox;
     const bool root = ::geteuid() == 0;
@@ -479,9 +482,13 @@ ChildOutcome run_child(const std::vector<std::string>& argv, const std::string& 
         if (sb.clean_env && !env_allowed(*e)) continue;
         env_strings.emplace_back(*e);
     }
+    const int n_extra = static_cast<int>(std::min<std::size_t>(extra_fds.size(), 4));
+    int extra[4] = {-1, -1, -1, -1};
+    for (int i = 0; i < n_extra; ++i) extra[i] = extra_fds[static_cast<std::size_t>(i)];
+    const int verdict_target = 3 + n_extra;
     if (!token.empty()) {
         env_strings.push_back("GEOLAB_TOKEN=" + token);
-        env_strings.push_back("GEOLAB_RESULT_FD=3");
+        env_strings.push_back("GEOLAB_RESULT_FD=" + std::to_string(verdict_target));
     }
     if (!workdir.empty()) {
         env_strings.push_back("TMPDIR=" + workdir);
@@ -522,8 +529,9 @@ ChildOutcome run_child(const std::vector<std::string>& argv, const std::string& 
         // ---- the supervisor ----
         // Other grader threads fork too: close every descriptor that is not ours (pipes of other tests, their
         // uid leases) so that their EOFs and locks do not wait for this test.
-        int keep[7] = {devnull, out_pipe[1], verdict_pipe[1], status_pipe[1], ctrl_pipe[0], setup_pipe[0], setup_pipe[1]};
-        for (int i = 1; i < 7; ++i)
+        int keep[11] = {devnull,  out_pipe[1], verdict_pipe[1], status_pipe[1], ctrl_pipe[0], setup_pipe[0],
+                        setup_pipe[1], extra[0], extra[1], extra[2], extra[3]};
+        for (int i = 1; i < 11; ++i)
             for (int j = i; j > 0 && keep[j] < keep[j - 1]; --j) std::swap(keep[j], keep[j - 1]);
         unsigned from = 3;
         for (int fd : keep) {
@@ -565,10 +573,13 @@ ChildOutcome run_child(const std::vector<std::string>& argv, const std::string& 
             int in_fd = ::fcntl(devnull, F_DUPFD_CLOEXEC, 10);
             int out_fd = ::fcntl(out_pipe[1], F_DUPFD_CLOEXEC, 10);
             int verdict_fd = ::fcntl(verdict_pipe[1], F_DUPFD_CLOEXEC, 10);
+            int moved[4] = {-1, -1, -1, -1};
+            for (int i = 0; i < n_extra; ++i) moved[i] = ::fcntl(extra[i], F_DUPFD_CLOEXEC, 10);
             ::dup2(in_fd, 0);  // dup2 clears O_CLOEXEC on the copies
             ::dup2(out_fd, 1);
             ::dup2(out_fd, 2);
-            if (!token.empty()) ::dup2(verdict_fd, 3);
+            for (int i = 0; i < n_extra; ++i) ::dup2(moved[i], 3 + i);
+            if (!token.empty()) ::dup2(verdict_fd, verdict_target);
             if (uid && (::setgroups(0, nullptr) != 0 || ::setgid(uid) != 0 || ::setuid(uid) != 0)) setup_failed(31);
             ::prctl(PR_SET_PDEATHSIG, SIGKILL);  // after setuid, which clears it
             ::execve(args[0], args.data(), envp.data());
@@ -581,6 +592,7 @@ ChildOutcome run_child(const std::vector<std::string>& argv, const std::string& 
         ::close(verdict_pipe[1]);
         ::close(setup_pipe[1]);
         ::close(devnull);
+        for (int i = 0; i < n_extra; ++i) ::close(extra[i]);  // the record pipes' ends belong to the test alone
         int wstatus = 0;
         int killed = 0;
         if (test > 0) {
@@ -614,6 +626,7 @@ ChildOutcome run_child(const std::vector<std::string>& argv, const std::string& 
         ::_exit(0);
     }
     ::setpgid(sup, sup);
+    if (forked) forked();
     ::close(devnull);
     ::close(out_pipe[1]);
     ::close(verdict_pipe[1]);
@@ -809,7 +822,130 @@ std::vector<TestInfo> list_tests(const std::filesystem::path& program, const Run
     return tests;
 }
 
+namespace {
+
+// The judge's options: the same limits, its own uid and no network, but nothing hidden (it is the course's own
+// program, in the build's bin/, and holds no student code); only the judge attaches pictures.
+RunOptions judge_options(const RunOptions& opt) {
+    RunOptions j = opt;
+    j.sandbox.hide.clear();
+    j.sandbox.prepare = nullptr;
+    j.sandbox.collect = nullptr;
+    if (j.sandbox.allow_list) j.sandbox.visible.push_back(opt.judge);  // its own program, read-only
+    return j;
+}
+
+// Record and replay: the performer runs the test with the student's code and records into the judge, which
+// replays it and decides. Two children at once, joined by two pipes: record (performer -> judge) and go
+// (judge -> performer, for timed calls).
+TestResult run_replayed(const std::filesystem::path& program, const TestInfo& test, const RunOptions& opt) {
+    TestResult r;
+    r.info = test;
+    const std::string token = random_token();
+    const double limit = test.timeout_s > 0 ? test.timeout_s : opt.timeout_s;
+    int record[2], go[2];
+    if (::pipe2(record, O_CLOEXEC) != 0) throw std::runtime_error("grader: pipe failed");
+    if (::pipe2(go, O_CLOEXEC) != 0) {
+        ::close(record[0]);
+        ::close(record[1]);
+        throw std::runtime_error("grader: pipe failed");
+    }
+    // The grader's copies close once both supervisors hold theirs: then EOF on either pipe means a side is gone.
+    std::mutex m;
+    int forked = 0;
+    bool closed = false;
+    auto close_ours = [&] {
+        std::lock_guard lock(m);
+        if (closed) return;
+        closed = true;
+        for (int fd : {record[0], record[1], go[0], go[1]}) ::close(fd);
+    };
+    auto one_forked = [&] {
+        bool both;
+        {
+            std::lock_guard lock(m);
+            both = ++forked == 2;
+        }
+        if (both) close_ours();
+    };
+    RunOptions perf_opt = opt;
+    perf_opt.figure_dir.clear();  // pictures come from the judge
+    const RunOptions judge_opt = judge_options(opt);
+    ChildOutcome perf, judge;
+    std::exception_ptr perf_error;
+    std::thread performer_thread([&] {
+        try {
+            perf = run_child({program.string(), "--geolab-record", test.name}, "", limit, perf_opt, opt.memory_mb,
+                             {record[1], go[0]}, one_forked);
+        } catch (...) {
+            perf_error = std::current_exception();
+        }
+    });
+    try {
+        // The judge waits for the performer; its own limit covers the performer's and some replay time.
+        judge = run_child({opt.judge.string(), "--geolab-replay", test.name, "--geolab-record-fd", "3",
+                           "--geolab-go-fd", "4"},
+                          token, 2 * limit + 10, judge_opt, opt.memory_mb, {record[0], go[1]}, one_forked);
+    } catch (...) {
+        close_ours();
+        performer_thread.join();
+        throw;
+    }
+    performer_thread.join();
+    close_ours();
+    if (perf_error) std::rethrow_exception(perf_error);
+
+    classify(judge, token, r, opt);
+    r.output = perf.output;  // what the student's program printed
+    r.seconds = perf.seconds;
+    // Where the judge stopped, to name the call the student's program was in.
+    std::string stopped, where;
+    if (auto pos = judge.verdict.find(token + " "); pos != std::string::npos) {
+        auto j = nlohmann::json::parse(judge.verdict.substr(pos + token.size() + 1), nullptr, false);
+        if (!j.is_discarded() && j.is_object()) {
+            stopped = j.value("stopped", "");
+            const auto calls = j.value("calls", 0u);
+            const std::string fn = j.value("last_function", "");
+            where = calls == 0 ? std::string(" before its first call into your code")
+                               : " in or after call " + std::to_string(calls) + " (" + fn + ")";
+            if (!test.suite.empty()) where += ", in '" + test.suite + "'";
+        }
+    }
+    auto override_with = [&](Status s, const std::string& why) {
+        r.status = s;
+        r.score = 0;
+        r.messages.insert(r.messages.begin(), why);
+    };
+    if (perf.timed_out)
+        override_with(Status::timeout, "killed after the time limit" + where + ": an infinite loop, or far too slow?");
+    else if (perf.flooded)
+        override_with(Status::error, "killed: printed more than " + std::to_string(opt.output_cap) + " bytes");
+    else if (perf.signal && stopped == "eof") {
+        std::string m = "crashed with " + signal_name(perf.signal) + where;
+        if (perf.signal == SIGXCPU) m += ": CPU time limit";
+        if (perf.signal == SIGXFSZ) m += ": wrote a file larger than the limit";
+        override_with(Status::crashed, m);
+    } else if (stopped == "eof") {
+        std::string m = "the test program exited (status " + std::to_string(perf.exit_code) + ")" + where +
+                        ", before the test finished: does the code call exit(), or abort?";
+        if (perf.exit_code == 127 && perf.output.find("cannot execute") != std::string::npos)
+            m = "the test program could not be started";
+        if (perf.output.find("std::bad_alloc") != std::string::npos) m += " (ran out of memory)";
+        override_with(Status::error, m);
+    } else if (judge.signal || (judge.verdict.empty() && !judge.timed_out)) {
+        // No verdict from the judge: it stopped on the answers it was given (an index out of range aborts it).
+        override_with(Status::failed, "the test stopped on your code's answers" + where +
+                                          " (the judge, which replays them, " +
+                                          (judge.signal ? "was killed by " + signal_name(judge.signal) : std::string("exited")) +
+                                          "): an index or size out of range?");
+    }
+    return r;
+}
+
+}  // namespace
+
 TestResult run_test(const std::filesystem::path& program, const TestInfo& test, const RunOptions& opt) {
+    if (!opt.judge.empty()) return run_replayed(program, test, opt);
     TestResult r;
     r.info = test;
     const std::string token = random_token();
@@ -859,8 +995,9 @@ LabReport grade_program(const std::string& lab, const std::string& variant, cons
     report.variant = variant;
     auto t0 = Clock::now();
     std::vector<TestInfo> tests;
+    report.isolated = !opt.judge.empty();
     try {
-        tests = list_tests(program, opt);
+        tests = opt.judge.empty() ? list_tests(program, opt) : list_tests(opt.judge, judge_options(opt));
     } catch (const std::exception& e) {
         report.error = e.what();
         return report;

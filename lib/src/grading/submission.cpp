@@ -689,6 +689,9 @@ std::string SubmissionReport::summary() const {
         os << "forbidden call: " << f.file << " calls " << f.symbol << (f.where.empty() ? "" : " [" + f.where + "]")
            << (f.reason.empty() ? "" : " (" + f.reason + ")")
            << (f.task.empty() ? "" : "; task '" + f.task + "' scores 0") << "\n";
+    if (status == SubmissionStatus::ok && !lab.isolated)
+        os << "verdict not isolated: this lab has no GEOLAB_BOUNDARY list, so its test program (with your code in "
+              "it) decided its own verdicts\n";
     if (status == SubmissionStatus::compile_error) os << "\nYour code did not compile; every test scores 0.\n";
     if (!compiler_output.empty()) os << "\n--- compiler messages ---\n" << compiler_output << "\n";
     return os.str();
@@ -710,9 +713,14 @@ SubmissionReport grade_submission(const fs::path& submission, const SubmissionOp
         const auto files = lab_files(root, opt.lab);
         if (files.empty()) throw std::runtime_error("lab " + opt.lab + " has no src/*.cpp files in " + root.string());
         const fs::path course_program = build / "bin" / ("test_" + opt.lab);
+        // The judge (record and replay): the course's own program, never relinked; it lists and judges.
+        const fs::path judge = build / "bin" / ("judge_" + opt.lab);
+        const fs::path boundary_syms = build / "boundary" / opt.lab / "student.syms";
         if (opt.build_course) {
             const std::string cmake = find_program("cmake");
-            CommandResult b = run_plain({cmake, "--build", build.string(), "--target", "test_" + opt.lab}, 3600);
+            std::vector<std::string> cmd{cmake, "--build", build.string(), "--target", "test_" + opt.lab};
+            if (fs::exists(boundary_syms)) cmd.push_back("judge_" + opt.lab);
+            CommandResult b = run_plain(cmd, 3600);
             if (b.exit_code != 0)
                 throw std::runtime_error("the course build of test_" + opt.lab + " failed:\n" + clip(b.output, 4000));
         }
@@ -775,6 +783,12 @@ SubmissionReport grade_submission(const fs::path& submission, const SubmissionOp
         // a clean environment, and a wall-clock cap on the whole submission. Fail closed: as root, a sandbox that
         // cannot be set up means no grading (unless the instructor says --allow-unisolated, and then loudly).
         RunOptions sandboxed = opt.run;
+        if (fs::exists(boundary_syms)) {
+            if (!fs::exists(judge))
+                throw std::runtime_error(judge.string() + " not found: build the course first (cmake --build " +
+                                         build.string() + ")");
+            sandboxed.judge = judge;
+        }
         Sandbox& sb = sandboxed.sandbox;
         sb.drop_privileges = true;
         sb.no_network = true;
@@ -882,6 +896,26 @@ SubmissionReport grade_submission(const fs::path& submission, const SubmissionOp
         auto link = [&](const std::vector<fs::path>& objects, bool asan, const fs::path& out) {
             std::vector<std::string> cmd = link_command(build, opt.lab), args;
             const std::string archive = "liblab_" + opt.lab.substr(0, 2) + ".a";
+            // The performer (record and replay) links the lab with each boundary function renamed for the
+            // recorder: the student's objects get the same renaming (definitions and their calls among them).
+            const std::string performer_archive = "liblab_" + opt.lab.substr(0, 2) + "_performer.a";
+            std::vector<fs::path> linked = objects;
+            bool renamed = false;
+            for (const auto& a : cmd) {
+                if (fs::path(a).filename() != performer_archive || renamed) continue;
+                renamed = true;
+                const std::string objcopy = find_program("objcopy");
+                if (objcopy.empty()) throw std::runtime_error("objcopy not found (apt-get install binutils)");
+                make_dir(work / "obj", 0700);
+                linked.clear();
+                for (std::size_t k = 0; k < objects.size(); ++k) {
+                    const fs::path o = work / "obj" / (std::to_string(k) + (asan ? "_asan" : "") + ".o");
+                    CommandResult c = run_plain({objcopy, "--redefine-syms=" + boundary_syms.string(),
+                                                 objects[k].string(), o.string()}, 120);
+                    if (c.exit_code != 0) return "objcopy failed on a compiled file: " + c.output;
+                    linked.push_back(o);
+                }
+            }
             bool replaced = false;
             for (std::size_t i = 0; i < cmd.size(); ++i) {
                 const std::string& a = cmd[i];
@@ -889,8 +923,8 @@ SubmissionReport grade_submission(const fs::path& submission, const SubmissionOp
                     ++i;
                     continue;
                 }
-                if (fs::path(a).filename() == archive) {
-                    for (const auto& o : objects) args.push_back(o.string());
+                if (fs::path(a).filename() == archive || fs::path(a).filename() == performer_archive) {
+                    for (const auto& o : linked) args.push_back(o.string());
                     replaced = true;
                     continue;
                 }
@@ -929,7 +963,7 @@ SubmissionReport grade_submission(const fs::path& submission, const SubmissionOp
             // Score 0, but with every test listed (from the course's own program) so max_score is right.
             rep.status = SubmissionStatus::compile_error;
             RunOptions list_opt = opt.run;
-            for (const auto& t : list_tests(course_program, list_opt)) {
+            for (const auto& t : list_tests(fs::exists(judge) ? judge : course_program, list_opt)) {
                 TestResult r;
                 r.info = t;
                 r.status = Status::failed;

@@ -1,10 +1,16 @@
 // The main() of every geolab test program. Besides plain doctest use (developers run the binary directly), it
-// speaks the grader's protocol:
-//   PROG --geolab-list            one JSON object per test case on stdout (name, suite, file, line, metadata)
+// speaks the grader's protocol (docs/architecture.md):
+//   PROG --geolab-list            one JSON object per test case on stdout (name, suite, file, line, metadata);
+//                                 the grader lists the judge, never a program with student code in it
 //   PROG --geolab-run NAME        run exactly that test; the verdict goes to the pipe whose number is in
-//                                 GEOLAB_RESULT_FD, prefixed by the per-run token from GEOLAB_TOKEN. Both are
-//                                 read and erased from the environment before any test code runs.
-// The grader trusts only that pipe line (with the right token), never stdout or the exit status.
+//                                 GEOLAB_RESULT_FD, prefixed by the per-run token from GEOLAB_TOKEN (a lab
+//                                 without a boundary list: that verdict is not isolated from student code)
+//   PERFORMER --geolab-record NAME   run that test with the student's code; every call across the lab's boundary
+//                                 is recorded to fd 3; a timed call waits for the judge's go on fd 4. No verdict.
+//   JUDGE --geolab-replay NAME [--geolab-record-fd N] [--geolab-go-fd M]
+//                                 run that test against the recording (default stdin; no timed calls without a
+//                                 go fd) and send the verdict as --geolab-run does.
+// The grader trusts only the verdict line (with the right token), never stdout or the exit status.
 #define DOCTEST_CONFIG_IMPLEMENT
 #define DOCTEST_CONFIG_NO_POSIX_SIGNALS  // a crash must reach the grader as a signal, not a report
 #include <doctest/doctest.h>
@@ -20,7 +26,13 @@
 
 #include <nlohmann/json.hpp>
 
+#include <csignal>
+#include <random>
+
+#include <fcntl.h>
+
 #include "geolab/errors.hpp"
+#include "geolab/grading/boundary_calls.hpp"
 #include "geolab/grading/test.hpp"
 
 namespace {
@@ -30,6 +42,8 @@ using nlohmann::json;
 std::string g_token;
 char g_token_buf[128] = {};  // constant-initialized: usable before any dynamic initialization
 int g_result_fd = -1;
+struct VerdictListener;
+VerdictListener* g_verdict = nullptr;
 
 std::string short_path(const char* file) {
     std::string f = file ? file : "";
@@ -79,7 +93,16 @@ struct ListReporter : doctest::IReporter {
 
 // Collects the verdict of the one test that runs and sends it to the grader's pipe at the end of the run.
 struct VerdictListener : doctest::IReporter {
-    explicit VerdictListener(const doctest::ContextOptions&) {}
+    explicit VerdictListener(const doctest::ContextOptions&) {
+        g_verdict = this;
+        // The judge: a recording that cannot answer a call ends the test as a failure, with what is known so far.
+        geolab::boundary::channel().stop = [this](const std::string& kind, const std::string& message) {
+            note(message + "\n" + contexts());
+            send("failed", false, kind);
+            std::cout.flush();
+            ::_exit(0);
+        };
+    }
     std::vector<std::string> messages;
     std::vector<std::string> ran;
     int asserts = 0, failed_asserts = 0;
@@ -107,6 +130,8 @@ struct VerdictListener : doctest::IReporter {
     }
     void test_case_reenter(const doctest::TestCaseData&) override {}
     void test_case_end(const doctest::CurrentTestCaseStats& st) override {
+        geolab::boundary::record_end();          // performer: the test is over
+        geolab::boundary::replay_end_of_test();  // judge: so must the recording be (or the verdict is a failure)
         asserts += st.numAssertsCurrentTest;
         failed_asserts += st.numAssertsFailedCurrentTest;
         success = st.testCaseSuccess;
@@ -143,14 +168,23 @@ struct VerdictListener : doctest::IReporter {
     void test_case_skipped(const doctest::TestCaseData&) override {}
 
     void test_run_end(const doctest::TestRunStats&) override {
+        send((success && !exception && ran.size() == 1) ? "passed" : "failed", geolab::NotImplemented::count() > 0, "");
+    }
+
+    // The verdict line to the grader's pipe. `stopped`: why a replay ended the test early (empty: it did not).
+    void send(const char* status, bool not_implemented, const std::string& stopped) {
         if (g_result_fd < 0) return;
+        const geolab::boundary::Channel& ch = geolab::boundary::channel();
         json j{{"ran", ran},
-               {"status", (success && !exception && ran.size() == 1) ? "passed" : "failed"},
-               {"not_implemented", geolab::NotImplemented::count() > 0},
+               {"status", status},
+               {"not_implemented", not_implemented},
                {"asserts", asserts},
                {"failed_asserts", failed_asserts},
                {"messages", messages},
-               {"figures", geolab::detail::attached_figures()}};
+               {"figures", geolab::detail::attached_figures()},
+               {"calls", ch.calls},
+               {"last_function", ch.last_function},
+               {"stopped", stopped}};
         std::string line = g_token + " " + j.dump() + "\n";
         const char* p = line.data();
         std::size_t left = line.size();
@@ -203,6 +237,38 @@ int main(int argc, char** argv) {
             std::cout.flush();
             return 0;  // the verdict went through the pipe; the exit status means nothing to the grader
         }
+    }
+    // Record and replay (geolab/grading/boundary_calls.hpp).
+    for (int i = 1; i + 1 < argc; ++i) {
+        const bool record = std::strcmp(argv[i], "--geolab-record") == 0;
+        const bool replay = std::strcmp(argv[i], "--geolab-replay") == 0;
+        if (!record && !replay) continue;
+        geolab::boundary::Channel& ch = geolab::boundary::channel();
+        if (record) {
+            std::signal(SIGPIPE, SIG_IGN);  // the judge gone: a failed write ends the recording quietly
+            ch.mode = geolab::boundary::Channel::Mode::record;
+            // Out of the low numbers (fd 3 was the old verdict pipe's place): stray writes to 3..9 hit nothing.
+            // Not a secret (code in this process can find them): writing into them only corrupts one's own answers.
+            const int base = 100 + static_cast<int>(std::random_device{}() % 800);
+            ch.data_fd = ::fcntl(3, F_DUPFD_CLOEXEC, base);
+            ch.go_fd = ::fcntl(4, F_DUPFD_CLOEXEC, base);
+            ::close(3);
+            ::close(4);
+        } else {
+            ch.mode = geolab::boundary::Channel::Mode::replay;
+            ch.data_fd = 0;
+            for (int k = 1; k + 1 < argc; ++k) {
+                if (std::strcmp(argv[k], "--geolab-record-fd") == 0) ch.data_fd = std::atoi(argv[k + 1]);
+                if (std::strcmp(argv[k], "--geolab-go-fd") == 0) ch.go_fd = std::atoi(argv[k + 1]);
+            }
+            ch.reader = std::make_unique<geolab::wire::Reader>(ch.data_fd, std::uint64_t{1} << 32);
+        }
+        const std::string filter = std::string("--test-case=") + argv[i + 1];
+        const char* args[] = {argv[0], filter.c_str(), "--case-sensitive", "--no-breaks", "--no-version"};
+        context.applyCommandLine(5, args);
+        context.run();
+        std::cout.flush();
+        return 0;
     }
     context.applyCommandLine(argc, argv);
     return context.run();

@@ -163,9 +163,9 @@ TEST_SUITE("Task 1: build the mesh") {
               geolab::hint("Find twins by bucketing the directed edges by start vertex (or sorting them), not by "
                            "scanning all edges for each edge.")) {
         const PolygonSoup soup = fx::icosphere(6);
-        const auto start = std::chrono::steady_clock::now();
-        const Mesh m = build_mesh(soup);
-        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        Mesh m;
+        // Timed by the grader from outside the process that runs build_mesh (grading/test.hpp).
+        const double seconds = geolab::time_student_call([&] { m = build_mesh(soup); });
         INFO("build_mesh took " << seconds << " s (the reference takes about a hundredth of that limit)");
         CHECK(seconds < 2.0);
         validate(m);

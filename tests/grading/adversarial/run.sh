@@ -15,6 +15,8 @@
 #                  and nowhere else (DESIGN.md rule 6: tasks are graded independently)
 # Then: a class graded with grade-all (one student includes another's files), the uid lease folder made by another
 # user (root only: grading is refused), the wall-clock cap of a whole submission.
+# The forge_* cases try to forge the verdict from inside the process that runs the student's code (issue 12):
+# record and replay (and the object checks) must leave each exactly its honest score.
 # Afterwards: no process of the sandbox uids is left, nothing was written into the course tree, the build or /tmp.
 # Usage: run.sh GEOLAB SOURCE_DIR BUILD_DIR
 set -uo pipefail
@@ -42,7 +44,9 @@ task_max() {  # task_max RESULTS TASK: the points of TASK's tests in a results.j
 }
 grade() {  # grade DIR NAME [extra args]: writes $out/NAME.json and NAME.log
   local dir=$1 name=$2; shift 2
-  "$geolab" grade --submission "$dir" --lab 01 --json "$out/$name.json" --work-dir "$work" --no-course-build \
+  # A wall-clock cap of its own: a submission that makes the grader run on (per-test limits taken from the
+  # student's process, forge_timeout) fails here instead of hanging CI.
+  timeout -s KILL 600 "$geolab" grade --submission "$dir" --lab 01 --json "$out/$name.json" --work-dir "$work" --no-course-build \
     --timeout 5 --memory-mb 512 -q "$@" >"$out/$name.log" 2>&1
 }
 sum_before=$(md5sum "$build/bin/test_01_halfedge" | cut -d' ' -f1)

@@ -18,6 +18,7 @@
 #include <utility>
 #include <vector>
 
+#include "geolab/boundary.hpp"
 #include "geolab/errors.hpp"
 #include "geolab/halfedge/mesh.hpp"
 #include "geolab/soup.hpp"
@@ -112,6 +113,7 @@ int euler_characteristic(const Mesh& mesh);
 struct Components {
     int count = 0;                      //!< the number of components
     std::vector<int> vertex_component;  //!< per vertex, its component in 0..count-1
+    GEOLAB_FIELDS(count, vertex_component)
 };
 
 //! The connected components. Numbered in order of their lowest vertex: vertex 0 is in component 0, the first
@@ -146,5 +148,28 @@ glm::dvec3 vertex_normal(const Mesh& mesh, Vertex v);
 //! Boundary and isolated vertices do not move. Connectivity is unchanged.
 //! \throw std::invalid_argument when t is not in [0, 1] (or NaN), or iterations < 0.
 void laplacian_smoothing(Mesh& mesh, double t, int iterations = 1);
+
+// ==== The grading boundary (for the grader; nothing to do for you) ===========================================
+// Your functions above, as the grader sees them: the tests' calls into your code are recorded in the program
+// that runs it and replayed in the judge, which has no code of yours and decides each verdict
+// (docs/architecture.md, "Grading protocol"). The inline forms above call these.
+#ifdef GEOLAB_BOUNDARY
+GEOLAB_BOUNDARY(build_mesh, Mesh(const PolygonSoup&))
+GEOLAB_BOUNDARY(edge_vertices, std::pair<Vertex, Vertex>(const Mesh&, Edge))
+GEOLAB_BOUNDARY(edge_faces, std::pair<Face, Face>(const Mesh&, Edge))
+GEOLAB_BOUNDARY(face_halfedges, void(const Mesh&, Face, std::vector<Halfedge>&))
+GEOLAB_BOUNDARY(outgoing_halfedges, void(const Mesh&, Vertex, std::vector<Halfedge>&))
+GEOLAB_BOUNDARY(valence, int(const Mesh&, Vertex))
+GEOLAB_BOUNDARY(one_ring_vertices, void(const Mesh&, Vertex, std::vector<Vertex>&))
+GEOLAB_BOUNDARY(one_ring_faces, void(const Mesh&, Vertex, std::vector<Face>&))
+GEOLAB_BOUNDARY(boundary_loops, std::vector<std::vector<Halfedge>>(const Mesh&))
+GEOLAB_BOUNDARY(euler_characteristic, int(const Mesh&))
+GEOLAB_BOUNDARY(connected_components, Components(const Mesh&))
+GEOLAB_BOUNDARY(genus, int(const Mesh&))
+GEOLAB_BOUNDARY(face_normal, glm::dvec3(const Mesh&, Face))
+GEOLAB_BOUNDARY(face_area, double(const Mesh&, Face))
+GEOLAB_BOUNDARY(vertex_normal, glm::dvec3(const Mesh&, Vertex))
+GEOLAB_BOUNDARY(laplacian_smoothing, void(Mesh&, double, int))
+#endif
 
 }  // namespace geolab::halfedge

@@ -94,6 +94,11 @@ struct RunOptions {
     //! A wall-clock cap shared by every child run with these options (e.g. a whole submission): a child is cut
     //! at the deadline, and after it nothing more starts (outcome: timed out). Unset: no cap.
     std::optional<std::chrono::steady_clock::time_point> deadline;
+    //! The lab's judge (judge_NN_name: its tests, given code and the replayer, no student code). Non-empty: the
+    //! tests, points, flags and limits come from the judge's listing, and each test's verdict from the judge
+    //! replaying what the program (the performer) recorded. Empty: the program lists and judges itself, and the
+    //! report says "verdict not isolated".
+    std::filesystem::path judge;
 };
 
 //! What grading one test program produced.
@@ -102,6 +107,7 @@ struct LabReport {
     std::string variant;  //!< "student" or "solution"
     std::vector<TestResult> results;
     std::string error;  //!< non-empty when the program could not be listed (then results is empty)
+    bool isolated = false;  //!< the verdicts came from the judge (record and replay), not from the program
     double seconds = 0;
     double score() const;
     double max_score() const;
@@ -126,11 +132,14 @@ bool can_drop_privileges();
 //! a uid and runs /bin/true in the full sandbox. Never throws.
 std::string isolation_problem(const Sandbox& sb);
 
-//! The test cases of `program` (runs `program --geolab-list` in a child with the same limits).
+//! The test cases of `program` (runs `program --geolab-list` in a child with the same limits). Pass the judge
+//! when there is one: a program with student code in it is never asked.
 //! \throw std::runtime_error naming the program and the reason if it cannot be listed.
 std::vector<TestInfo> list_tests(const std::filesystem::path& program, const RunOptions& opt);
 
-//! Run one test case in a fresh child process and classify the outcome.
+//! Run one test case in a fresh child process and classify the outcome. With opt.judge: the program records
+//! (--geolab-record) into the judge (--geolab-replay), both children at once, and the outcome combines what the
+//! grader saw of the program (crash, time limit, output cap) with the judge's verdict.
 TestResult run_test(const std::filesystem::path& program, const TestInfo& test, const RunOptions& opt);
 
 //! List and run every test case of `program`, `opt.jobs` at a time; results in listing order.

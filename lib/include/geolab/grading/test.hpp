@@ -11,6 +11,7 @@
 //! Hidden tests live in tests/NN_lab/hidden/ so that the student release can leave them out.
 #include <doctest/doctest.h>
 
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -69,6 +70,14 @@ struct time_limit {
     void fill(doctest::detail::TestCase& tc) const { detail::meta_for(tc).timeout_s = seconds; }
     void fill(doctest::detail::TestSuite&) const {}
 };
+
+//! Time one call into the student's code: runs f, which must make exactly one call of the lab's functions, and
+//! returns that call's wall-clock seconds as the grader measures them. In a graded run the judge (which has no
+//! student code) lets the student's process start the call and times it until the whole answer has arrived;
+//! the student's process cannot report its own time (there it returns 0). Run directly (no grader), it is the
+//! local wall clock. Like all test code, the code around it must be deterministic: the performer and the judge
+//! run it alike, and the judge answers call N with the performer's answer to call N.
+double time_student_call(const std::function<void()>& f);
 
 //! Relative tolerance helper: |a - b| <= rel * scale, for messages that say what was compared.
 inline bool near(double a, double b, double rel, double scale = 1.0) {

@@ -36,6 +36,8 @@
 #include <ostream>
 #include <vector>
 
+#include "geolab/boundary.hpp"
+
 namespace geolab::halfedge {
 
 //! The index of "no element".
@@ -51,6 +53,7 @@ struct Handle {
     constexpr Handle() = default;
     constexpr explicit Handle(std::uint32_t i) : idx(i) {}
     constexpr bool is_valid() const { return idx != invalid_index; }
+    GEOLAB_FIELDS(idx)  // what crosses the grading boundary (geolab/boundary.hpp)
 
     friend constexpr bool operator==(Handle, Handle) = default;
     friend constexpr auto operator<=>(Handle, Handle) = default;
@@ -232,6 +235,9 @@ private:
     std::vector<Face> face_;
     // per face
     std::vector<Halfedge> face_halfedge_;
+
+public:
+    GEOLAB_FIELDS(positions_, vertex_halfedge_, to_vertex_, next_, face_, face_halfedge_)  // (geolab/boundary.hpp)
 };
 
 //! Check every invariant of a half-edge mesh; throw geolab::TopologyError naming the FIRST broken one and the

@@ -1,0 +1,50 @@
+// The tests of the replay fixture (one program per side: performer and judge), graded by test_grader.cpp.
+#include <stdexcept>
+#include <vector>
+
+#include "geolab/grading/test.hpp"
+#include "replay_fixture.hpp"
+
+using namespace replay_fixture;
+
+TEST_SUITE("Task 1: replay") {
+TEST_CASE("right answers pass" * geolab::points(1)) {
+    CHECK(add(2, 3) == 5);
+    std::vector<int> out{7, 7};
+    fill(3, out);
+    CHECK(out == std::vector<int>{0, 1, 2});
+    const Stats s = stats({1.5, 2.5});
+    CHECK(s.count == 2);
+    CHECK(s.values == std::vector<double>{1.5, 2.5});
+    CHECK(s.label == "stats");
+    CHECK(checked_sqrt(17) == 4);
+    CHECK_THROWS_WITH_AS(checked_sqrt(-1), "checked_sqrt: x < 0", std::invalid_argument);
+}
+TEST_CASE("a wrong answer fails" * geolab::points(1)) { CHECK(add_wrong(2, 3) == 5); }
+TEST_CASE("not implemented" * geolab::points(1)) { CHECK(not_written(1) == 1); }
+TEST_CASE("crashes in its second call" * geolab::points(1)) {
+    CHECK(add(1, 1) == 2);
+    CHECK(crash_in_call(1) == 1);
+}
+TEST_CASE("exits in a call" * geolab::points(1)) { CHECK(exit_in_call(1) == 1); }
+TEST_CASE("hangs in a call" * geolab::points(1) * geolab::time_limit(1)) { CHECK(hang_in_call(1) == 1); }
+TEST_CASE("forges bytes on the record pipe" * geolab::points(1)) { CHECK(forge_record(1) == 1); }
+TEST_CASE("claims a vector larger than the recording" * geolab::points(1)) { CHECK(huge_count(1).empty()); }
+TEST_CASE("a timed call is timed by the judge" * geolab::points(1) * geolab::hidden()) {
+    int got = 0;
+    const double seconds = geolab::time_student_call([&] { got = static_cast<int>(slow(300)); });
+    CHECK(got == 300);
+    CHECK(seconds >= 0.29);
+    CHECK(seconds < 5);
+}
+TEST_CASE("answers a timed call before it starts" * geolab::points(1)) {
+    CHECK(answer_early(4) == 4);
+    const double seconds = geolab::time_student_call([&] { slow(300); });
+    CHECK(seconds < 0.1);
+}
+TEST_CASE("calls among the student's functions are not recorded" * geolab::points(1)) { CHECK(outer(1) == 4); }
+TEST_CASE("an index out of range stops the judge" * geolab::points(1)) {
+    std::vector<int> v(3, 0);
+    CHECK(v[bad_index(0)] == 0);  // operator[]: the judge is built with _GLIBCXX_ASSERTIONS
+}
+}
