@@ -220,6 +220,8 @@ std::vector<fs::path> make_release(const fs::path& root, const fs::path& out, bo
         if (rel.string().rfind("data/models", 0) == 0) return true;
         // The grader's adversarial suite is the reference with twists: answers, so instructors only.
         if (rel.string().rfind("tests/grading/adversarial", 0) == 0) return true;
+        // geolab mutate's fixture lab has a solution of its own; mutate needs solutions/, so instructors only.
+        if (rel.string().rfind("tests/grading/mutate", 0) == 0) return true;
         if (rel == release_readme_template) return true;  // it becomes README.md
         for (const auto& part : rel)
             if (part == "hidden") return true;
