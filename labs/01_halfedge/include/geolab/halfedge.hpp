@@ -36,8 +36,10 @@ namespace geolab::halfedge {
 //! boundary half-edge when v is on the boundary; invalid when v is used by no face (isolated vertices are kept).
 //! The result passes validate().
 //!
-//! Cost: O(#corners) time with flat arrays, e.g. the directed edges bucketed by their start vertex (a counting
-//! sort), and the twin of u→v looked up among the edges leaving v.
+//! Cost: O(#corners · log valence) time at most, whatever the valences, with flat arrays: e.g. the directed edges
+//! bucketed by their start vertex (a counting sort) and sorted by end vertex within each bucket, so that the twin
+//! of u→v is a binary search among the edges leaving v. (A linear scan there is quadratic at a vertex of high
+//! valence: a fan of 400,000 triangles would take minutes.)
 //!
 //! \throw std::invalid_argument (from geolab::check_soup) when the soup is not valid data: an index out of
 //!        range, a face with fewer than 3 vertices or a repeated vertex, a non-finite coordinate.
