@@ -26,6 +26,7 @@ namespace geolab::grading::mutate {
 namespace fs = std::filesystem;
 using detail::read_text;
 using detail::write_text;
+using detail::split_command;
 
 const char* to_string(Outcome o) {
     switch (o) {
@@ -76,37 +77,6 @@ CommandResult run_plain(const std::vector<std::string>& argv, double timeout_s) 
     o.file_size_mb = 2048;
     o.sandbox.no_network = false;
     return run_command(argv, timeout_s, o);
-}
-
-// Split a command line as a POSIX shell would for the simple quoting CMake writes.
-std::vector<std::string> split_command(const std::string& cmd) {
-    std::vector<std::string> out;
-    std::string cur;
-    bool in_token = false;
-    char quote = 0;
-    for (std::size_t i = 0; i < cmd.size(); ++i) {
-        const char c = cmd[i];
-        if (quote) {
-            if (c == quote) quote = 0;
-            else if (c == '\\' && quote == '"' && i + 1 < cmd.size()) cur += cmd[++i];
-            else cur += c;
-        } else if (c == '\'' || c == '"') {
-            quote = c;
-            in_token = true;
-        } else if (c == '\\' && i + 1 < cmd.size()) {
-            cur += cmd[++i];
-            in_token = true;
-        } else if (c == ' ' || c == '\t' || c == '\n') {
-            if (in_token) out.push_back(cur);
-            cur.clear();
-            in_token = false;
-        } else {
-            cur += c;
-            in_token = true;
-        }
-    }
-    if (in_token) out.push_back(cur);
-    return out;
 }
 
 // How to compile one solution file and link the lab's test program, from the course build.

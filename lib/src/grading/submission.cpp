@@ -30,6 +30,7 @@ using Clock = std::chrono::steady_clock;
 
 using detail::read_text;
 using detail::write_text;
+using detail::split_command;
 
 // A folder only root may enter, or that others may only traverse (0711).
 void make_dir(const fs::path& p, unsigned mode) {
@@ -47,37 +48,6 @@ std::string hex_hash(const std::string& text) {
     std::snprintf(buf, sizeof buf, "%016llx%016llx", static_cast<unsigned long long>(fnv(1469598103934665603ull)),
                   static_cast<unsigned long long>(fnv(0x9e3779b97f4a7c15ull)));
     return buf;
-}
-
-// Split a command line the way a POSIX shell would for the simple quoting CMake writes.
-std::vector<std::string> split_command(const std::string& cmd) {
-    std::vector<std::string> out;
-    std::string cur;
-    bool in_token = false;
-    char quote = 0;
-    for (std::size_t i = 0; i < cmd.size(); ++i) {
-        char c = cmd[i];
-        if (quote) {
-            if (c == quote) quote = 0;
-            else if (c == '\\' && quote == '"' && i + 1 < cmd.size()) cur += cmd[++i];
-            else cur += c;
-        } else if (c == '\'' || c == '"') {
-            quote = c;
-            in_token = true;
-        } else if (c == '\\' && i + 1 < cmd.size()) {
-            cur += cmd[++i];
-            in_token = true;
-        } else if (c == ' ' || c == '\t' || c == '\n') {
-            if (in_token) out.push_back(cur);
-            cur.clear();
-            in_token = false;
-        } else {
-            cur += c;
-            in_token = true;
-        }
-    }
-    if (in_token) out.push_back(cur);
-    return out;
 }
 
 // The lab's files: basename -> the stub text (generated from solutions/ when it exists); given files too (their

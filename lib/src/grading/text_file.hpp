@@ -5,6 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace geolab::grading::detail {
 
@@ -27,6 +28,38 @@ inline void write_text(const std::filesystem::path& p, const std::string& text,
     f.close();
     if (!f) throw std::runtime_error(p.string() + ": cannot write");
     std::filesystem::permissions(p, perms);
+}
+
+//! Split a command line as a POSIX shell would for the simple quoting CMake and Ninja write (compile_commands.json,
+//! `ninja -t commands`).
+inline std::vector<std::string> split_command(const std::string& cmd) {
+    std::vector<std::string> out;
+    std::string cur;
+    bool in_token = false;
+    char quote = 0;
+    for (std::size_t i = 0; i < cmd.size(); ++i) {
+        char c = cmd[i];
+        if (quote) {
+            if (c == quote) quote = 0;
+            else if (c == '\\' && quote == '"' && i + 1 < cmd.size()) cur += cmd[++i];
+            else cur += c;
+        } else if (c == '\'' || c == '"') {
+            quote = c;
+            in_token = true;
+        } else if (c == '\\' && i + 1 < cmd.size()) {
+            cur += cmd[++i];
+            in_token = true;
+        } else if (c == ' ' || c == '\t' || c == '\n') {
+            if (in_token) out.push_back(cur);
+            cur.clear();
+            in_token = false;
+        } else {
+            cur += c;
+            in_token = true;
+        }
+    }
+    if (in_token) out.push_back(cur);
+    return out;
 }
 
 }  // namespace geolab::grading::detail
