@@ -371,6 +371,12 @@ MutateReport run_mutate(const MutateOptions& opt) {
         r.detail = it->second.value("detail", "");
         r.tests_run = it->second.value("tests_run", 0);
         r.seconds = it->second.value("seconds", 0.0);
+        // The equivalent list may have been reviewed since the log was written: today's list decides.
+        if (r.outcome == Outcome::equivalent && !equivalent.count(m.key())) r.outcome = Outcome::survived;
+        if (r.outcome == Outcome::survived && equivalent.count(m.key())) {
+            r.outcome = Outcome::equivalent;
+            r.detail = equivalent[m.key()];
+        }
         done.push_back(r);
     }
     if (!opt.log.empty() && !opt.resume) write_text(opt.log, "");
