@@ -143,7 +143,10 @@ if [ "$(id -u)" -eq 0 ] && command -v unshare >/dev/null; then
 static const int vandal = [] { std::ofstream("$build/ADV_UID_PWNED") << "written by a submission\n"; return 0; }();
 void geolab::halfedge::laplacian_smoothing(Mesh&, double, int) { throw geolab::NotImplemented(__func__); }
 EOF
-  unshare -m sh -c "mount -t tmpfs tmpfs /tmp && mkdir /tmp/geolab-sandbox-uids && chown 12345:12345 /tmp/geolab-sandbox-uids &&
+  # Only the lease folder is replaced (bind-mounted in a private mount namespace): the course tree and the build
+  # may themselves live under /tmp (a CI clone), so /tmp as a whole stays.
+  mkdir -p /tmp/geolab-sandbox-uids "$out/taken-uids" && chown 12345:12345 "$out/taken-uids"
+  unshare -m --propagation private sh -c "mount --bind '$out/taken-uids' /tmp/geolab-sandbox-uids &&
     '$geolab' grade --submission '$out/sub_uid_dir' --lab 01 --json '$out/uid_dir.json' --work-dir '$work' --no-course-build \
       --timeout 5 --memory-mb 512 -q" >"$out/uid_dir.log" 2>&1; rc=$?
   got=$(score_of "$out/uid_dir.json" 2>/dev/null)
