@@ -38,6 +38,11 @@ std::string missing_models_check(const std::vector<std::string>& models) {
 }
 
 // setup.sh: runs once when Gradescope builds the image (Ubuntu 22.04 or 24.04, as root) in /autograder/source.
+// " judge_<lab>" when the lab grades by record and replay (its judge decides the verdicts; see architecture.md).
+std::string judge_target(const std::string& lab) {
+    return std::filesystem::exists(bin_dir() / ("judge_" + lab)) ? " judge_" + lab : "";
+}
+
 std::string setup_sh(const std::string& lab, const std::vector<std::string>& models) {
     return R"(#!/usr/bin/env bash
 # Gradescope image set-up for geolab lab )" + lab + R"(: packages, a check of the models this zip carries, the one-time
@@ -61,7 +66,7 @@ fi
 # shellcheck disable=SC2086  # GEOLAB_CMAKE_ARGS is a list of arguments
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DGEOLAB_BENCHMARKS=OFF \
   -DGEOLAB_MODELS_DIR="$root/source/data/models" ${GEOLAB_CMAKE_ARGS:-} >/dev/null
-cmake --build build --target geolab test_)" + lab + R"(
+cmake --build build --target geolab test_)" + lab + judge_target(lab) + R"(
 # The answers stay root-only, whatever else the sandbox manages to do (it also hides them from the tests).
 chmod -R go-rwx solutions tests build/CMakeFiles build/bin 2>/dev/null || true
 chmod go+x build build/bin
