@@ -70,6 +70,8 @@ cmake --build build --target geolab test_)" + lab + judge_target(lab) + R"(
 # The answers stay root-only, whatever else the sandbox manages to do (it also hides them from the tests).
 chmod -R go-rwx solutions tests build/CMakeFiles build/bin 2>/dev/null || true
 chmod go+x build build/bin
+# The lab's judge (record and replay) runs as the sandbox user: it may run it, never read it.
+chmod go+x build/bin/judge_* 2>/dev/null || true
 )";
 }
 

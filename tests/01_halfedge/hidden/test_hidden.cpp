@@ -184,8 +184,8 @@ TEST_SUITE("Task 1: build the mesh") {
         Mesh f;
         const double fan_seconds = geolab::time_student_call([&] { f = build_mesh(fan); });
         INFO("fan of " << n << " triangles: build_mesh took " << fan_seconds
-                       << " s (the reference about 0.05 s; a scan per corner at the apex takes minutes)");
-        CHECK(fan_seconds < 2.0);
+                       << " s (the reference about 0.05 s optimised; a scan of the apex's edges per corner takes about a minute)");
+        CHECK(fan_seconds < 10.0);  // generous: unoptimised builds on a busy machine take a few seconds
         validate(f);
         CHECK(f.n_vertices() == n + 2);
         CHECK(f.n_edges() == 2 * n + 1);
