@@ -27,6 +27,7 @@ namespace fs = std::filesystem;
 using detail::read_text;
 using detail::write_text;
 using detail::split_command;
+using detail::find_program;
 
 const char* to_string(Outcome o) {
     switch (o) {
@@ -59,14 +60,6 @@ std::string trim(const std::string& s) {
     const auto a = s.find_first_not_of(" \t\r\n");
     if (a == std::string::npos) return "";
     return s.substr(a, s.find_last_not_of(" \t\r\n") - a + 1);
-}
-
-std::string find_program(const std::string& name) {
-    for (const char* dir : {"/usr/bin", "/bin", "/usr/local/bin"}) {
-        const fs::path p = fs::path(dir) / name;
-        if (::access(p.c_str(), X_OK) == 0) return p.string();
-    }
-    return "";
 }
 
 // A trusted command (compiler, linker, git, ninja) with plain limits.

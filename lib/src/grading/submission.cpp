@@ -31,6 +31,7 @@ using Clock = std::chrono::steady_clock;
 using detail::read_text;
 using detail::write_text;
 using detail::split_command;
+using detail::find_program;
 
 // A folder only root may enter, or that others may only traverse (0711).
 void make_dir(const fs::path& p, unsigned mode) {
@@ -77,14 +78,6 @@ CommandResult run_plain(const std::vector<std::string>& argv, double timeout_s, 
     o.file_size_mb = 1024;
     o.sandbox.no_network = false;
     return run_command(argv, timeout_s, o);
-}
-
-std::string find_program(const std::string& name) {
-    for (const char* dir : {"/usr/bin", "/bin", "/usr/local/bin"}) {
-        fs::path p = fs::path(dir) / name;
-        if (::access(p.c_str(), X_OK) == 0) return p.string();
-    }
-    return "";
 }
 
 // The submitted files: every regular file under `dir` (symlinks and special files are ignored).

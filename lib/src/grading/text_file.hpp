@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 namespace geolab::grading::detail {
 
 //! The whole file. \throw std::runtime_error "PATH: cannot read".
@@ -60,6 +62,15 @@ inline std::vector<std::string> split_command(const std::string& cmd) {
     }
     if (in_token) out.push_back(cur);
     return out;
+}
+
+//! The absolute path of a system program (/usr/bin, /bin, /usr/local/bin), or "" when none is executable.
+inline std::string find_program(const std::string& name) {
+    for (const char* dir : {"/usr/bin", "/bin", "/usr/local/bin"}) {
+        const std::filesystem::path p = std::filesystem::path(dir) / name;
+        if (::access(p.c_str(), X_OK) == 0) return p.string();
+    }
+    return "";
 }
 
 }  // namespace geolab::grading::detail
