@@ -28,6 +28,7 @@
 #include "geolab/halfedge.hpp"
 #include "geolab/io.hpp"
 #include "geolab/models.hpp"
+#include "geolab/render/demo.hpp"
 #include "geolab/render/render.hpp"
 
 namespace {
@@ -38,6 +39,10 @@ namespace fx = geolab::fixtures;
 namespace gr = geolab::render;
 using glm::dvec3;
 using glm::vec3;
+using gr::attempt;
+using gr::fmt;
+using gr::Issues;
+using gr::Segments;
 
 // ---- colours (the handout's legend uses these names) ------------------------------------------------------------
 const vec3 kGrey{0.82f, 0.82f, 0.84f};        // faces
@@ -56,66 +61,18 @@ const vec3 kFace{1.00f, 0.72f, 0.40f};        // the selected face: orange
 const vec3 kNeighbour{0.62f, 0.78f, 1.00f};   // faces across the selected face's edges: light blue
 const vec3 kNormal{0.55f, 0.15f, 0.75f};      // normals: purple
 
-// One colour per boundary loop, cycling.
-vec3 loop_color(std::size_t i) {
-    static const vec3 palette[] = {{0.90f, 0.10f, 0.10f}, {0.10f, 0.35f, 0.95f}, {0.05f, 0.65f, 0.15f},
-                                   {0.95f, 0.55f, 0.00f}, {0.70f, 0.10f, 0.80f}, {0.00f, 0.65f, 0.70f},
-                                   {0.55f, 0.35f, 0.10f}, {0.95f, 0.30f, 0.65f}, {0.45f, 0.45f, 0.45f}};
-    return palette[i % std::size(palette)];
-}
-
 // Dark blue → light blue along the walk order of outgoing_halfedges (the first, halfedge(v), is darkest).
 vec3 walk_color(std::size_t i, std::size_t n) {
     const float s = n > 1 ? static_cast<float>(i) / static_cast<float>(n - 1) : 0.0f;
     return glm::mix(vec3(0.00f, 0.08f, 0.45f), vec3(0.20f, 0.60f, 1.00f), s);
 }
 
-// ---- calling the student's code -------------------------------------------------------------------------------------
-
-// What went wrong while drawing one frame: functions not written yet, and functions that threw.
-struct Issues {
-    std::vector<std::string> missing, errors;
-    bool any() const { return !missing.empty() || !errors.empty(); }
-    std::string str() const {
-        std::string s;
-        if (!missing.empty()) {
-            s = "not implemented yet: ";
-            for (std::size_t i = 0; i < missing.size(); ++i) s += (i ? ", " : "") + missing[i];
-        }
-        for (const auto& e : errors) s += (s.empty() ? "" : " | ") + e;
-        return s;
-    }
-};
-
-// Runs f(); on geolab::NotImplemented records `function` as missing, on another exception records its message.
-template <class F>
-bool attempt(Issues& issues, const std::string& function, F&& f) {
-    try {
-        f();
-        return true;
-    } catch (const geolab::NotImplemented&) {
-        if (std::find(issues.missing.begin(), issues.missing.end(), function) == issues.missing.end())
-            issues.missing.push_back(function);
-    } catch (const std::bad_alloc&) {
-        issues.errors.push_back(gr::memory_limit_message(function));
-    } catch (const std::exception& e) {
-        issues.errors.push_back(function + " threw: " + e.what());
-    }
-    return false;
-}
+// ---- calling the student's code (gr::attempt records what is missing or throws) -------------------------------
 
 // A handle returned by the student's code, checked before it indexes anything.
 bool ok(const Mesh& m, Vertex v) { return v.idx < m.n_vertices(); }
 bool ok(const Mesh& m, Face f) { return f.idx < m.n_faces(); }
 bool ok(const Mesh& m, Halfedge h) { return h.idx < m.n_halfedges(); }
-
-std::string fmt(double x, int precision = 3) {
-    std::ostringstream os;
-    os.precision(precision);
-    os << x;
-    return os.str();
-}
-std::string fmt(const dvec3& v) { return "(" + fmt(v.x) + ", " + fmt(v.y) + ", " + fmt(v.z) + ")"; }
 
 // ---- input ---------------------------------------------------------------------------------------------------------
 
@@ -378,41 +335,6 @@ struct Demo {
 
 // ---- drawing -----------------------------------------------------------------------------------------------------
 
-// The arrow a→b shortened at both ends, with a head whose barbs lie along ±side (a unit vector ⟂ b − a);
-// a harpoon (one barb, on the +side) when `one_sided`.
-void add_arrow(std::vector<vec3>& seg, std::vector<vec3>& col, dvec3 a, dvec3 b, dvec3 side, vec3 color,
-               double shrink = 0.12, double head = 0.22, bool one_sided = false) {
-    const dvec3 d = b - a;
-    const dvec3 p = a + shrink * d, q = b - shrink * d;
-    const double len = glm::length(q - p);
-    const dvec3 u = (q - p) / std::max(len, 1e-300);
-    const double hl = head * len, hw = 0.45 * hl;
-    const dvec3 base = q - hl * u;
-    auto push = [&](dvec3 x, dvec3 y) {
-        seg.push_back(vec3(x)), seg.push_back(vec3(y));
-        col.push_back(color);
-    };
-    push(p, q);
-    if (head <= 0.0) return;
-    push(q, base + (one_sided ? 1.6 : 1.0) * hw * side);
-    if (!one_sided) push(q, base - hw * side);
-}
-
-// The normal n at p as an arrow of length `length`.
-void add_normal(std::vector<vec3>& seg, std::vector<vec3>& col, dvec3 p, dvec3 n, double length) {
-    if (!(glm::length(n) > 0.5)) return;  // zero (degenerate) or not a unit vector: nothing to draw
-    const dvec3 any = std::abs(n.x) < 0.9 ? dvec3(1, 0, 0) : dvec3(0, 1, 0);
-    add_arrow(seg, col, p, p + length * n, glm::normalize(glm::cross(n, any)), kNormal, 0.0, 0.25);
-}
-
-// A unit vector in the plane of the triangle (a, b, c) orthogonal to b − a, pointing to c's side.
-dvec3 side_towards(dvec3 a, dvec3 b, dvec3 c) {
-    const dvec3 u = glm::normalize(b - a);
-    dvec3 s = (c - a) - glm::dot(c - a, u) * u;
-    const double l = glm::length(s);
-    return l > 0 ? s / l : dvec3(0, 0, 1);
-}
-
 // The centroid of the loop of half-edges through h (a face or a hole), walking next with the given Mesh.
 dvec3 loop_centroid(const Mesh& m, Halfedge h0) {
     dvec3 c(0.0);
@@ -428,17 +350,16 @@ dvec3 loop_centroid(const Mesh& m, Halfedge h0) {
 
 // Half-edge h drawn as an arrow inside its face, offset towards the face's centroid (a boundary half-edge: offset
 // away from its twin's face, i.e. into the hole).
-void add_halfedge_arrow(std::vector<vec3>& seg, std::vector<vec3>& col, const Mesh& m, Halfedge h, vec3 color,
-                        double offset = 0.16) {
+void add_halfedge_arrow(Segments& seg, const Mesh& m, Halfedge h, vec3 color, double offset = 0.16) {
     const dvec3 a = m.position(m.from_vertex(h)), b = m.position(m.to_vertex(h));
     const bool boundary = m.is_boundary(h);
     const dvec3 c = boundary ? loop_centroid(m, m.twin(h)) : loop_centroid(m, h);
     const double sign = boundary ? -1.0 : 1.0;
     // move the segment towards (or away from) the centroid by `offset` × its distance to the edge
-    const dvec3 inward = side_towards(a, b, c);
+    const dvec3 inward = gr::side_towards(a, b, c);
     const double dist = glm::dot(c - a, inward);
     const dvec3 shift = sign * offset * dist * inward;
-    add_arrow(seg, col, a + shift, b + shift, sign * inward, color, 0.14, 0.2, true);
+    gr::add_arrow(seg, a + shift, b + shift, sign * inward, color, {.shrink = 0.14, .head = 0.2, .one_sided = true});
 }
 
 // The direction to look at the face left of h from (for the camera only, not a face normal of Task 4): the unit
@@ -467,12 +388,12 @@ struct View {
 View draw(const Demo& d) {
     View out;
     Issues issues = d.topology_issues;
-    for (const auto& f : d.action_issues.missing) issues.missing.push_back(f);
-    for (const auto& e : d.action_issues.errors) issues.errors.push_back(e);
+    issues.add(d.action_issues);
     const PolygonSoup soup = d.current();
     const auto& P = soup.positions;
     std::vector<vec3> face_color(soup.n_faces(), kGrey);
-    std::vector<vec3> seg, seg_col, thin, thin_col, pts, pts_col, big, big_col, bad, bad_col;
+    Segments seg, thin, bad;
+    std::vector<vec3> pts, pts_col, big, big_col;
     std::ostringstream st;
 
     const bool wire = d.wireframe.value_or(soup.n_faces() <= 6000);
@@ -487,7 +408,7 @@ View draw(const Demo& d) {
             if (u < P.size() && v < P.size()) {
                 // the doubly used directed edge u → v gets an arrow head; a complex edge does not
                 const dvec3 side = glm::normalize(glm::cross(P[v] - P[u], dvec3(0.3, 0.5, 0.8)));
-                add_arrow(bad, bad_col, P[u], P[v], side, kTwin, 0.0, r.faces.size() == 2 ? 0.25 : 0.0);
+                gr::add_arrow(bad, P[u], P[v], side, kTwin, {.shrink = 0.0, .head = r.faces.size() == 2 ? 0.25 : 0.0});
             }
         for (auto v : r.vertices)
             if (v < P.size()) big.push_back(vec3(P[v])), big_col.push_back(kVertex);
@@ -499,10 +420,7 @@ View draw(const Demo& d) {
         if (d.show_boundary && d.mode != Mode::halfedge)  // (in half-edge mode red / blue / green mean twin / next / to)
             for (std::size_t i = 0; i < d.loops.size(); ++i)
                 for (Halfedge h : d.loops[i])
-                    if (ok(m, h)) {
-                        thin.push_back(vec3(m.position(m.from_vertex(h)))), thin.push_back(vec3(m.position(m.to_vertex(h))));
-                        thin_col.push_back(loop_color(i));
-                    }
+                    if (ok(m, h)) thin.add(m.position(m.from_vertex(h)), m.position(m.to_vertex(h)), gr::category_color(i));
 
         if (d.mode == Mode::vertex && d.vertex && *d.vertex < m.n_vertices()) {
             const Vertex v{*d.vertex};
@@ -528,7 +446,7 @@ View draw(const Demo& d) {
                     // barbs in the plane of the face on the left of h (or of its twin's face on the boundary)
                     const Halfedge in_face = m.is_boundary(h) ? m.twin(h) : h;
                     const dvec3 c = m.position(m.to_vertex(m.next(in_face)));
-                    add_arrow(seg, seg_col, a, b, side_towards(a, b, c), walk_color(i, out_he.size()), 0.06, 0.2);
+                    gr::add_arrow(seg, a, b, gr::side_towards(a, b, c), walk_color(i, out_he.size()), {.shrink = 0.06, .head = 0.2});
                 }
                 st << ", " << out_he.size() << " outgoing";
             });
@@ -541,7 +459,7 @@ View draw(const Demo& d) {
             attempt(issues, "vertex_normal", [&] {
                 const dvec3 n = vertex_normal(m, v);
                 out.focus_normal = n;
-                add_normal(thin, thin_col, m.position(v), n, 1.5 * el);
+                gr::add_normal(thin, m.position(v), n, 1.5 * el, kNormal);
                 st << ", normal " << fmt(n);
             });
             big.push_back(vec3(m.position(v))), big_col.push_back(kVertex);
@@ -556,7 +474,7 @@ View draw(const Demo& d) {
             if (attempt(issues, "face_halfedges", [&] { face_halfedges(m, f, hs); })) {
                 st << ": " << hs.size() << " half-edges";
                 for (std::size_t i = 0; i < hs.size(); ++i)
-                    if (ok(m, hs[i])) add_halfedge_arrow(seg, seg_col, m, hs[i], walk_color(i, hs.size()), 0.2);
+                    if (ok(m, hs[i])) add_halfedge_arrow(seg, m, hs[i], walk_color(i, hs.size()), 0.2);
                 attempt(issues, "edge_faces", [&] {
                     for (Halfedge h : hs) {
                         if (!ok(m, h)) continue;
@@ -574,7 +492,7 @@ View draw(const Demo& d) {
             attempt(issues, "face_normal", [&] {
                 const dvec3 n = face_normal(m, f);
                 out.focus_normal = n;
-                add_normal(thin, thin_col, c, n, 1.5 * el);
+                gr::add_normal(thin, c, n, 1.5 * el, kNormal);
                 st << ", normal " << fmt(n);
             });
             out.focus = c;
@@ -588,13 +506,13 @@ View draw(const Demo& d) {
                 Halfedge x = m.next(g);
                 while (x != g) {
                     if (x != n && x != t && x != h)
-                        add_halfedge_arrow(seg, seg_col, m, x, m.is_boundary(x) ? kBoundaryHe : kOtherHe);
+                        add_halfedge_arrow(seg, m, x, m.is_boundary(x) ? kBoundaryHe : kOtherHe);
                     x = m.next(x);
                 }
             }
-            add_halfedge_arrow(seg, seg_col, m, t, kTwin);
-            add_halfedge_arrow(seg, seg_col, m, n, kNext);
-            add_halfedge_arrow(seg, seg_col, m, h, kH);
+            add_halfedge_arrow(seg, m, t, kTwin);
+            add_halfedge_arrow(seg, m, n, kNext);
+            add_halfedge_arrow(seg, m, h, kH);
             big.push_back(vec3(m.position(m.to_vertex(h)))), big_col.push_back(kToVertex);
             st << "h" << h.idx << ": " << m.from_vertex(h) << " → " << m.to_vertex(h) << ", twin h" << t.idx
                << ", next h" << n.idx << ", face " << m.face(h) << ", edge " << m.edge(h);
@@ -636,9 +554,9 @@ View draw(const Demo& d) {
     gr::MeshStyle style{
         .color = kGrey, .smooth = false, .wireframe = wire, .wire_color = kWire, .wire_width = 1.0f, .opacity = d.opacity};
     out.scene.add_mesh_face_colors(soup, face_color, style);
-    if (!thin.empty()) out.scene.add_lines(thin, thin_col, 4.0f);
-    if (!seg.empty()) out.scene.add_lines(seg, seg_col, 3.0f);
-    if (!bad.empty()) out.scene.add_lines(bad, bad_col, 7.0f);
+    thin.draw(out.scene, 4.0f);
+    seg.draw(out.scene, 3.0f);
+    bad.draw(out.scene, 7.0f);
     if (!pts.empty()) out.scene.add_points(pts, pts_col, 10.0f);
     if (!big.empty()) out.scene.add_points(big, big_col, 16.0f);
 
@@ -657,58 +575,9 @@ View draw(const Demo& d) {
 
 // ---- cameras -------------------------------------------------------------------------------------------------------
 
-// Yaw and pitch (degrees) of the orbit camera whose eye is in direction `dir` from the target, for up = +y.
-void angles(dvec3 dir, float& yaw, float& pitch) {
-    dir = glm::normalize(dir);
-    pitch = static_cast<float>(glm::degrees(std::asin(std::clamp(dir.y, -0.996, 0.996))));
-    yaw = static_cast<float>(glm::degrees(std::atan2(dir.x, dir.z)));
-}
-
-// The camera `cam` (its angles and field of view kept) moved so that everything in `scene` just fits a
-// width : height image with a 6% margin: tighter than Camera::framing, which fits the bounding box's corners.
-gr::Camera fit(gr::Camera cam, const gr::Scene& scene, double aspect) {
-    std::vector<vec3> pts;
-    for (const auto& m : scene.meshes()) pts.insert(pts.end(), m.position.begin(), m.position.end());
-    for (const auto& l : scene.lines()) pts.insert(pts.end(), l.position.begin(), l.position.end());
-    for (const auto& p : scene.points()) pts.insert(pts.end(), p.position.begin(), p.position.end());
-    if (pts.empty()) return cam;
-    const double ty = std::tan(glm::radians(cam.fov_deg) * 0.5) * (aspect < 1 ? 1 / aspect : 1.0);
-    const double tx = ty * aspect;
-    for (int pass = 0; pass < 3; ++pass) {
-        const glm::mat4 view = cam.view();
-        const dvec3 right(view[0][0], view[1][0], view[2][0]), up(view[0][1], view[1][1], view[2][1]),
-            back(view[0][2], view[1][2], view[2][2]);
-        // the distance at which every point is inside the view cone around the target
-        double d = 0.0;
-        for (const auto& p : pts) {
-            const dvec3 q = dvec3(p) - dvec3(cam.target);
-            const double z = glm::dot(q, back);
-            d = std::max({d, z + std::abs(glm::dot(q, right)) / tx, z + std::abs(glm::dot(q, up)) / ty});
-        }
-        cam.distance = static_cast<float>(d);
-        if (pass == 2) break;
-        // centre the image: move the target by the middle of the projected extent
-        double lo_x = 1e300, hi_x = -1e300, lo_y = 1e300, hi_y = -1e300;
-        for (const auto& p : pts) {
-            const dvec3 q = dvec3(p) - dvec3(cam.target);
-            const double depth = d - glm::dot(q, back);
-            const double sx = glm::dot(q, right) / depth, sy = glm::dot(q, up) / depth;
-            lo_x = std::min(lo_x, sx), hi_x = std::max(hi_x, sx), lo_y = std::min(lo_y, sy), hi_y = std::max(hi_y, sy);
-        }
-        cam.target += vec3(0.5 * (lo_x + hi_x) * d * right + 0.5 * (lo_y + hi_y) * d * up);
-    }
-    cam.distance *= 1.06f;
-    return cam;
-}
-
-// The whole scene (fitted at yaw, pitch)
-gr::Camera whole(const gr::Scene& scene, double aspect, float yaw = 30.0f, float pitch = 20.0f) {
-    return fit(gr::Camera::framing(scene.bounds(), yaw, pitch), scene, aspect);
-}
-
 // The whole scene, or (zoom > 0 and a selection) the selection seen along its normal, `zoom` × its radius wide.
 gr::Camera camera_for(const View& v, const Demo& d, double zoom, double aspect = 4.0 / 3.0, float tilt_deg = 0.0f) {
-    if (!v.focus || zoom <= 0.0) return whole(v.scene, aspect);
+    if (!v.focus || zoom <= 0.0) return gr::whole(v.scene, aspect);
     dvec3 dir = v.focus_normal && glm::length(*v.focus_normal) > 0.5 ? *v.focus_normal : dvec3(0);
     if (glm::length(dir) == 0.0) {  // no normal (not implemented yet): look from the mesh's centre outwards
         dvec3 c(0.0);
@@ -717,31 +586,12 @@ gr::Camera camera_for(const View& v, const Demo& d, double zoom, double aspect =
         dir = glm::length(*v.focus - c) > 0 ? *v.focus - c : dvec3(0, 0, 1);
     }
     gr::Camera cam;
-    angles(dir, cam.yaw_deg, cam.pitch_deg);
+    gr::orbit_angles(dir, dvec3(0, 1, 0), cam.yaw_deg, cam.pitch_deg);
     cam.yaw_deg += tilt_deg;  // a little off the normal, so that the normal shows
-    cam.target = vec3(*v.focus);
-    cam.distance = static_cast<float>(zoom * v.focus_radius / std::tan(glm::radians(cam.fov_deg) * 0.5));
-    return cam;
+    return gr::close_up(cam, *v.focus, zoom * v.focus_radius);
 }
 
 // ---- figures -------------------------------------------------------------------------------------------------------
-
-struct FigureWriter {
-    std::filesystem::path dir;
-    int width, height;  // the default size; figures with several panels are wider
-    int written = 0;
-
-    void write(const std::string& file, const gr::Scene& scene, const gr::Camera& cam, const std::string& what,
-               int w = 0, int h = 0) {
-        const auto path = dir / file;
-        gr::render_png(scene, cam, path, w ? w : width, h ? h : height);
-        std::cout << "wrote " << path.string() << "  (" << what << ")\n";
-        ++written;
-    }
-    void skip(const std::string& file, const std::string& why) {
-        std::cout << "skipped " << (dir / file).string() << ": " << why << "\n";
-    }
-};
 
 // Scale and move a soup so that its bounding box is centred at `at` with largest side `size`.
 PolygonSoup normalized(PolygonSoup s, dvec3 at, double size) {
@@ -753,13 +603,6 @@ PolygonSoup normalized(PolygonSoup s, dvec3 at, double size) {
     return s;
 }
 
-// The first of the models that is fetched, else nullopt.
-std::optional<std::string> first_model(std::initializer_list<const char*> names) {
-    for (const char* n : names)
-        if (geolab::model_path(n)) return std::string(n);
-    return std::nullopt;
-}
-
 // A point on the surface: the middle of the bounding box's face at +z (where the models look at the viewer).
 dvec3 front_point(const std::vector<dvec3>& p, double height = 0.5) {
     dvec3 lo(1e300), hi(-1e300);
@@ -767,10 +610,8 @@ dvec3 front_point(const std::vector<dvec3>& p, double height = 0.5) {
     return {0.5 * (lo.x + hi.x), lo.y + height * (hi.y - lo.y), hi.z};
 }
 
-int render_figures(const std::filesystem::path& dir, int width, int height) {
-    std::filesystem::create_directories(dir);
-    FigureWriter w{dir, width, height};
-    const double aspect = static_cast<double>(width) / height;
+int render_figures(gr::FigureWriter w) {
+    const double aspect = w.aspect();
 
     // (a) the half-edge diagram: a hexagon fan, seen from above, with h, twin(h), next(h), to_vertex(h), face(h)
     {
@@ -789,30 +630,30 @@ int render_figures(const std::filesystem::path& dir, int width, int height) {
             scene.add_mesh_face_colors(d.soup, face_color,
                                        {.color = kGrey, .smooth = false, .wireframe = true, .wire_color = kWire,
                                         .wire_width = 2.0f});
-            std::vector<vec3> seg, col;
+            Segments seg;
             for (Halfedge x : m.halfedges())
                 if (x != h && x != m.twin(h) && x != m.next(h))
-                    add_halfedge_arrow(seg, col, m, x, m.is_boundary(x) ? kBoundaryHe : kOtherHe, 0.18);
-            scene.add_lines(seg, col, 2.5f);
-            seg.clear(), col.clear();
+                    add_halfedge_arrow(seg, m, x, m.is_boundary(x) ? kBoundaryHe : kOtherHe, 0.18);
+            seg.draw(scene, 2.5f);
+            seg = {};
             if (h.is_valid()) {
-                add_halfedge_arrow(seg, col, m, m.twin(h), kTwin, 0.18);
-                add_halfedge_arrow(seg, col, m, m.next(h), kNext, 0.18);
-                add_halfedge_arrow(seg, col, m, h, kH, 0.18);
-                scene.add_lines(seg, col, 5.0f);
+                add_halfedge_arrow(seg, m, m.twin(h), kTwin, 0.18);
+                add_halfedge_arrow(seg, m, m.next(h), kNext, 0.18);
+                add_halfedge_arrow(seg, m, h, kH, 0.18);
+                seg.draw(scene, 5.0f);
             }
             std::vector<vec3> corners;
             for (const auto& p : d.soup.positions) corners.push_back(vec3(p));
             scene.add_points(corners, kWire, 11.0f);
             if (h.is_valid()) scene.add_points({vec3(m.position(m.to_vertex(h)))}, kToVertex, 22.0f);
-            w.write("halfedge_diagram.png", scene, whole(scene, aspect, 0.0f, 0.0f),
+            w.write("halfedge_diagram.png", scene, gr::whole(scene, aspect, 0.0f, 0.0f),
                     "hexagon fan: h black, twin(h) red, next(h) blue, to_vertex(h) green, face(h) yellow");
         }
     }
 
     // (b) a one-ring on a real mesh, zoomed in on a vertex of valence 7 on the model's front
     {
-        const auto model = first_model({"bunny00", "cow"});
+        const auto model = gr::first_model({"bunny00", "cow"});
         Demo d(model.value_or("icosphere"), model ? load(*model) : fx::icosphere(3));
         d.mode = Mode::vertex;
         d.vertex = 0;
@@ -835,7 +676,7 @@ int render_figures(const std::filesystem::path& dir, int width, int height) {
 
     // (b') a face, its half-edges and its neighbours across its edges
     {
-        const auto model = first_model({"cow", "bunny00"});
+        const auto model = gr::first_model({"cow", "bunny00"});
         Demo d(model.value_or("icosphere"), model ? load(*model) : fx::icosphere(3));
         d.mode = Mode::face;
         d.face = 0;
@@ -860,27 +701,27 @@ int render_figures(const std::filesystem::path& dir, int width, int height) {
 
     // (c) boundary loops, one colour per loop: a scanned mask with holes, and a grid with holes cut out
     {
-        const auto model = first_model({"holes", "head", "lion"});
+        const auto model = gr::first_model({"holes", "head", "lion"});
         if (model) {
             Demo d(*model, load(*model));
             d.mode = Mode::vertex;
             d.wireframe = false;
             View v = draw(d);
-            w.write("boundary_loops.png", v.scene, whole(v.scene, aspect, 15.0f, 50.0f), v.status);
+            w.write("boundary_loops.png", v.scene, gr::whole(v.scene, aspect, 15.0f, 50.0f), v.status);
         } else {
             w.skip("boundary_loops.png", "no model with holes fetched (tools/fetch_models.sh)");
         }
         Demo g("grid_holes", grid_with_holes());
         View vg = draw(g);
-        w.write("boundary_loops_grid.png", vg.scene, whole(vg.scene, aspect, 0.0f, 0.0f), vg.status);
+        w.write("boundary_loops_grid.png", vg.scene, gr::whole(vg.scene, aspect, 0.0f, 0.0f), vg.status);
     }
 
     // (d) smoothing: 0, 10, 50 iterations side by side (t = 0.5), on a jittered mesh; one camera for all three
     {
-        const auto model = first_model({"bunny00"});
+        const auto model = gr::first_model({"bunny00"});
         const int its[] = {0, 10, 50};
         const int pw = 500, ph = 450;
-        gr::Image sheet{3 * pw, ph, std::vector<std::uint8_t>(4u * 3 * pw * ph, 255)};
+        std::vector<gr::Image> panels;
         std::optional<gr::Camera> cam;
         std::string status;
         bool smoothed = true;
@@ -894,15 +735,11 @@ int render_figures(const std::filesystem::path& dir, int width, int height) {
                       (d.action_issues.any() ? d.action_issues.str() : d.message.empty() ? "jittered input" : d.message);
             gr::Scene scene;
             scene.add_mesh(d.current(), {.color = kGrey, .smooth = false});
-            if (!cam) cam = whole(scene, static_cast<double>(pw) / ph, 0.0f, 10.0f);  // the input's framing
-            const gr::Image panel = gr::render_image(scene, *cam, pw, ph);
-            for (int y = 0; y < ph; ++y)
-                std::copy_n(panel.rgba.begin() + 4 * y * pw, 4 * pw, sheet.rgba.begin() + 4 * (y * 3 * pw + i * pw));
+            if (!cam) cam = gr::whole(scene, static_cast<double>(pw) / ph, 0.0f, 10.0f);  // the input's framing
+            panels.push_back(gr::render_image(scene, *cam, pw, ph));
         }
         if (smoothed) {
-            sheet.write_png(dir / "smoothing.png");
-            std::cout << "wrote " << (dir / "smoothing.png").string() << "  (" << status << ")\n";
-            ++w.written;
+            w.write("smoothing.png", gr::hstack(panels), status);
         } else {
             w.skip("smoothing.png", status);
         }
@@ -922,12 +759,11 @@ int render_figures(const std::filesystem::path& dir, int width, int height) {
             d.wireframe = true;
             if (std::string(c.name) == "fan") d.opacity = 0.8f;  // the fins hide each other
             View v = draw(d);
-            w.write(std::string("nonmanifold_") + c.name + ".png", v.scene, whole(v.scene, aspect, c.yaw, c.pitch),
+            w.write(std::string("nonmanifold_") + c.name + ".png", v.scene, gr::whole(v.scene, aspect, c.yaw, c.pitch),
                     d.build_problem);
         }
     }
-    std::cout << w.written << " figures in " << dir.string() << "\n";
-    return 0;
+    return w.finish();
 }
 
 // ---- the window ------------------------------------------------------------------------------------------------------
@@ -971,67 +807,44 @@ bool on_key(Demo& d, int key) {
     return false;
 }
 
-int run_window(Demo& d, int frames, const std::string& screenshot, const std::string& keys, double zoom) {
-    gr::Viewer viewer("geolab demo 01: half-edge meshes", 960, 720);
-    std::cout << kKeys << "\n";
-    auto refresh = [&](bool reframe, bool to_selection) {
-        if (to_selection && !d.wireframe) d.wireframe = true;  // close up: show the edges
-        View v = draw(d);
-        const std::string status = v.status;
-        viewer.set_scene(std::move(v.scene), reframe);
-        if (to_selection) {
-            View again = draw(d);
-            viewer.set_camera(camera_for(again, d, zoom > 0 ? zoom : 3.0));
-        }
-        viewer.set_status(status + " | V F H B W Space R J Z, Esc");
-        std::cout << status << "\n";
-    };
-    refresh(true, zoom > 0 && (d.vertex || d.face || d.halfedge));
-    viewer.on_pick([&](const gr::Ray& ray) {
-        d.pick(ray);
-        refresh(false, false);
-    });
-    viewer.on_key([&](int key) {
-        const bool zoom_now = on_key(d, key);
-        refresh(false, zoom_now);
-    });
-    if (frames > 0) {  // scripted: keys, a few frames, a screenshot
-        for (char c : keys) {
-            if (c == 'S' || c == 's') {  // as the window's S key
-                viewer.run_frames(1);
-                std::cout << "wrote " << viewer.save_screenshot().string() << "\n";
-                continue;
-            }
-            const bool zoom_now = on_key(d, c == '_' ? ' ' : std::toupper(static_cast<unsigned char>(c)));
-            refresh(false, zoom_now);
-        }
-        viewer.run_frames(frames);
-        if (!screenshot.empty()) {
-            viewer.screenshot(screenshot);
-            std::cout << "wrote " << screenshot << "\n";
-        }
-        return 0;
-    }
-    viewer.run();
-    return 0;
+// The window: the view of `d`, picking, the keys; --zoom frames the selection at the start, Z at any time.
+int run_window(const gr::DemoProgram& program, Demo& d, double zoom) {
+    bool to_selection = zoom > 0 && (d.vertex || d.face || d.halfedge);  // the next frame looks at the selection
+    return program.show({.title = "geolab demo 01: half-edge meshes",
+                         .draw =
+                             [&] {
+                                 if (to_selection && !d.wireframe) d.wireframe = true;  // close up: show the edges
+                                 View v = draw(d);
+                                 const gr::Camera cam = to_selection ? camera_for(v, d, zoom > 0 ? zoom : 3.0)
+                                                                     : gr::Camera::framing(v.scene.bounds());
+                                 return gr::Frame{std::move(v.scene), cam, v.status};
+                             },
+                         .key = [&](int key) { return to_selection = on_key(d, key); },
+                         .pick =
+                             [&](const gr::Ray& ray) {
+                                 d.pick(ray);
+                                 return to_selection = false;
+                             },
+                         .key_hint = [] { return std::string(" | V F H B W Space R J Z, Esc"); }});
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app{"Lab 01 demo: half-edge meshes. Pick a vertex (one-ring), a face or a half-edge (twin, next); "
-                 "boundary loops in colour; Laplacian smoothing step by step."};
+    gr::DemoProgram program("demo_01_halfedge",
+                            "Lab 01 demo: half-edge meshes. Pick a vertex (one-ring), a face or a half-edge (twin, "
+                            "next); boundary loops in colour; Laplacian smoothing step by step.",
+                            kKeys, 800);
+    CLI::App& app = program.cli();
     std::string input;
-    std::string png, figures, screenshot, keys;
     std::optional<std::uint32_t> vertex, face, halfedge;
-    int smooth = 0, frames = 0, width = 800, height = 600;
+    int smooth = 0;
     double t = 0.5, noise = 0.0, zoom = -1.0;
+    bool no_boundary = false;
     app.add_option("mesh", input,
                    std::string("A fixture (") + kFixtureNames +
                        "), a mesh file (.obj .off .ply .stl) or a fetched model (bunny00, cow, ...). "
                        "Default: bunny00 if fetched, else icosphere");
-    app.add_option("--png", png, "Render the view into this PNG instead of opening a window");
-    app.add_option("--figures", figures, "Render the handout's figures into this folder and exit");
     app.add_option("--vertex", vertex, "Select vertex N (vertex mode: its one-ring)");
     app.add_option("--face", face, "Select face N (face mode: its half-edges and neighbours)");
     app.add_option("--halfedge", halfedge, "Select half-edge N (half-edge mode: twin, next, to_vertex, face)");
@@ -1040,25 +853,11 @@ int main(int argc, char** argv) {
     app.add_option("--noise", noise, "Jitter the vertices by up to A × the mean edge length first")->check(CLI::NonNegativeNumber);
     app.add_option("--zoom", zoom,
                    "Frame the selection, R × its radius (0: the whole mesh; default 2.5 with --png and a selection)");
-    app.add_option("--size", width, "PNG width (height = 3/4 of it)")->capture_default_str();
-    std::size_t memory_mb = gr::default_demo_memory_mb();
-    app.add_option("--memory-mb", memory_mb, "Address-space cap for your code, MiB (0: none; default: the grader's)")
-        ->capture_default_str();
-    bool no_boundary = false;
     app.add_flag("--no-boundary", no_boundary, "Do not draw the boundary loops");
-    app.add_option("--frames", frames, "(testing) draw N frames in the window, then exit")->group("");
-    app.add_option("--screenshot", screenshot, "(testing) with --frames: save the window to this PNG")->group("");
-    app.add_option("--keys", keys, "(testing) with --frames: press these keys first ('_' = Space)")->group("");
-    app.footer(kKeys);
-    CLI11_PARSE(app, argc, argv);
-    height = width * 3 / 4;
-    if (!gr::limit_demo_memory(memory_mb)) std::cerr << "demo_01_halfedge: could not cap the memory; running without\n";
+    if (const auto status = program.parse(argc, argv)) return *status;
 
-    try {
-        if (!figures.empty()) {
-            gr::check_figure_dir(figures);
-            return render_figures(figures, width, height);
-        }
+    return program.run([&] {
+        if (!program.figures().empty()) return render_figures(program.figure_writer());
 
         if (input.empty()) input = geolab::model_path("bunny00") ? "bunny00" : "icosphere";
         Demo d(input, load(input));
@@ -1080,23 +879,12 @@ int main(int argc, char** argv) {
         if (smooth > 0) d.smooth(smooth);
         if (!(t >= 0.0 && t <= 1.0)) d.message = "t = " + fmt(t) + " is outside [0, 1]";
 
-        if (!png.empty()) {
+        if (!program.png().empty()) {
             const double z = zoom >= 0 ? zoom : 2.5;
             if (z > 0 && (vertex || face || halfedge) && !d.wireframe) d.wireframe = true;  // zoomed: show the edges
             View v = draw(d);
-            gr::render_png(v.scene, camera_for(v, d, z), png, width, height);
-            std::cout << v.status << "\nwrote " << png << "\n";
-            return 0;
+            return program.write_png(v.scene, camera_for(v, d, z, program.aspect()), v.status);
         }
-        return run_window(d, frames, screenshot, keys, zoom);
-    } catch (const gr::NoDisplay& e) {
-        std::cerr << "demo_01_halfedge: " << e.what() << "\n";
-        return 1;
-    } catch (const std::bad_alloc&) {
-        std::cerr << "demo_01_halfedge: " << gr::memory_limit_message("the demo") << "\n";
-        return 1;
-    } catch (const std::exception& e) {
-        std::cerr << "demo_01_halfedge: " << e.what() << "\n";
-        return 1;
-    }
+        return run_window(program, d, zoom);
+    });
 }

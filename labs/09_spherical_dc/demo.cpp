@@ -30,6 +30,7 @@
 #include "geolab/io.hpp"
 #include "geolab/mesh_field.hpp"
 #include "geolab/models.hpp"
+#include "geolab/render/demo.hpp"
 #include "geolab/render/render.hpp"
 
 namespace {
@@ -40,6 +41,11 @@ using geolab::ScalarField;
 namespace gr = geolab::render;
 using glm::dvec3;
 using glm::vec3;
+using gr::box_around;
+using gr::camera_from;
+using gr::fmt;
+using gr::Frame;
+using gr::Issues;
 
 // ---- colours (the handout's legend uses these names) ------------------------------------------------------------
 const vec3 kGrey{0.80f, 0.80f, 0.83f};        // surfaces
@@ -64,63 +70,19 @@ constexpr double kPi = 3.14159265358979323846;
 
 // ---- calling the student's code -------------------------------------------------------------------------------------
 
-// What went wrong: functions not written yet, and functions that threw.
-struct Issues {
-    std::vector<std::string> missing, errors;
-    bool any() const { return !missing.empty() || !errors.empty(); }
-    void add(const Issues& o) {
-        for (const auto& m : o.missing)
-            if (std::find(missing.begin(), missing.end(), m) == missing.end()) missing.push_back(m);
-        for (const auto& e : o.errors)
-            if (std::find(errors.begin(), errors.end(), e) == errors.end()) errors.push_back(e);
-    }
-    std::string str() const {
-        std::string s;
-        if (!missing.empty()) {
-            s = "not implemented yet: ";
-            for (std::size_t i = 0; i < missing.size(); ++i) s += (i ? ", " : "") + missing[i];
-        }
-        for (const auto& e : errors) s += (s.empty() ? "" : " | ") + e;
-        return s;
-    }
-};
-
 // The function a NotImplemented names ("not implemented: NAME (this is yours ...)"); stubs pass __func__, so a
 // member function shows as its bare name (add, solve) — we add which step needed it.
 std::string missing_function(const std::string& what, const std::string& step) {
-    std::string name = what;
-    const std::string prefix = "not implemented: ";
-    if (name.rfind(prefix, 0) == 0) name = name.substr(prefix.size());
-    if (const auto p = name.find(" ("); p != std::string::npos) name = name.substr(0, p);
+    std::string name = gr::not_implemented_name(what);
     if (name == "add" || name == "solve" || name == "error") name = "Qef::" + name;
     return name == step ? name : name + " (needed by " + step + ")";
 }
 
-// Runs f(); on NotImplemented records the missing function, on another exception records the message.
+// gr::attempt, naming the missing function as missing_function does.
 template <class F>
-bool attempt(Issues& issues, const std::string& step, F&& f) {
-    try {
-        f();
-        return true;
-    } catch (const geolab::NotImplemented& e) {
-        const std::string m = missing_function(e.what(), step);
-        if (std::find(issues.missing.begin(), issues.missing.end(), m) == issues.missing.end())
-            issues.missing.push_back(m);
-    } catch (const std::bad_alloc&) {
-        issues.errors.push_back(gr::memory_limit_message(step));
-    } catch (const std::exception& e) {
-        issues.errors.push_back(step + " threw: " + e.what());
-    }
-    return false;
+bool attempt_step(Issues& issues, const std::string& step, F&& f) {
+    return gr::attempt(issues, step, std::forward<F>(f), missing_function);
 }
-
-std::string fmt(double x, int precision = 3) {
-    std::ostringstream os;
-    os.precision(precision);
-    os << x;
-    return os.str();
-}
-std::string fmt(const dvec3& v) { return "(" + fmt(v.x) + ", " + fmt(v.y) + ", " + fmt(v.z) + ")"; }
 
 // ---- input ---------------------------------------------------------------------------------------------------------
 
@@ -183,19 +145,6 @@ void add_spherical_cell(std::vector<vec3>& seg, const dvec3& o, const Spherical&
         }
 }
 
-// The 12 edges of the box [a, b].
-void add_box(std::vector<vec3>& seg, const dvec3& a, const dvec3& b) {
-    for (int axis = 0; axis < 3; ++axis)
-        for (int c = 0; c < 4; ++c) {
-            dvec3 p = a, q = a;
-            const int u = (axis + 1) % 3, v = (axis + 2) % 3;
-            p[u] = q[u] = (c & 1) ? b[u] : a[u];
-            p[v] = q[v] = (c & 2) ? b[v] : a[v];
-            q[axis] = b[axis];
-            seg.push_back(vec3(p)), seg.push_back(vec3(q));
-        }
-}
-
 // The level set f = level in the plane c + a u + b w, (a, b) ∈ [−R, R]², by marching squares on an n × n grid.
 std::vector<vec3> plane_contour(const ScalarField& f, const dvec3& c, const dvec3& u, const dvec3& w, double R, int n,
                                 double level) {
@@ -217,35 +166,6 @@ std::vector<vec3> plane_contour(const ScalarField& f, const dvec3& c, const dvec
             }
             for (std::size_t e = 0; e + 1 < x.size(); e += 2) seg.push_back(vec3(x[e])), seg.push_back(vec3(x[e + 1]));
         }
-    return seg;
-}
-
-// The faces of `soup` whose centroid satisfies keep(centroid) (positions shared; unreferenced ones stay).
-template <class Keep>
-PolygonSoup cut(const PolygonSoup& soup, Keep keep) {
-    PolygonSoup out;
-    out.positions = soup.positions;
-    for (std::size_t f = 0; f < soup.n_faces(); ++f) {
-        dvec3 c(0.0);
-        for (auto i : soup.face(f)) c += soup.positions[i];
-        if (keep(c / double(soup.face(f).size()))) out.add_face(soup.face(f));
-    }
-    return out;
-}
-
-// Undirected edges used by exactly one face, as segment pairs.
-std::vector<vec3> boundary_segments(const PolygonSoup& soup) {
-    std::map<std::pair<std::uint32_t, std::uint32_t>, int> count;
-    for (std::size_t f = 0; f < soup.n_faces(); ++f) {
-        const auto c = soup.face(f);
-        for (std::size_t i = 0; i < c.size(); ++i) {
-            auto a = c[i], b = c[(i + 1) % c.size()];
-            ++count[{std::min(a, b), std::max(a, b)}];
-        }
-    }
-    std::vector<vec3> seg;
-    for (const auto& [e, n] : count)
-        if (n == 1) seg.push_back(vec3(soup.positions[e.first])), seg.push_back(vec3(soup.positions[e.second]));
     return seg;
 }
 
@@ -273,20 +193,6 @@ dvec3 surface_point(const ScalarField& f) {
     }
     return c;
 }
-
-// A camera looking at `box` from direction eye_dir (from the target towards the eye) with world up `up`
-// (replicates the orbit camera's frame to find yaw and pitch).
-gr::Camera camera_from(const geolab::Box& box, dvec3 eye_dir, dvec3 up) {
-    const vec3 u = glm::normalize(vec3(up));
-    const vec3 ref = std::abs(u.z) < 0.9f ? vec3(0, 0, 1) : vec3(0, -1, 0);
-    const vec3 front = glm::normalize(ref - glm::dot(ref, u) * u), right = glm::cross(u, front);
-    const vec3 e = glm::normalize(vec3(eye_dir));
-    const float pitch = glm::degrees(std::asin(std::clamp(glm::dot(e, u), -1.0f, 1.0f)));
-    const float yaw = glm::degrees(std::atan2(glm::dot(e, right), glm::dot(e, front)));
-    return gr::Camera::framing(box, yaw, pitch, vec3(u));
-}
-
-geolab::Box box_around(const dvec3& c, double r) { return {c - dvec3(r), c + dvec3(r)}; }
 
 // ---- the pipelines, run once per level and cached ----------------------------------------------------------------
 
@@ -316,7 +222,7 @@ SphRun run_spherical(const ScalarField& f, int level) {
     const dvec3 ext = b.hi - b.lo;
     run.unit = std::max({ext.x, ext.y, ext.z}) / double(1 << level);
     run.path = {b.center()};
-    attempt(run.issues, "correct_origin", [&] {
+    attempt_step(run.issues, "correct_origin", [&] {
         auto p = correct_origin(f, b.center(), {.unit = run.unit});
         if (!p.empty()) run.path = std::move(p);
     });
@@ -326,15 +232,15 @@ SphRun run_spherical(const ScalarField& f, int level) {
         run.r_max = std::max(run.r_max, glm::length(q - run.origin));
     }
     run.r_max *= 1.05;
-    attempt(run.issues, "build_spherical_octree", [&] {
+    attempt_step(run.issues, "build_spherical_octree", [&] {
         run.tree = std::make_shared<Octree>(build_spherical_octree(f, level, run.origin, 0.0, run.r_max));
     });
     if (run.tree)
-        run.has_vertices = attempt(run.issues, "place_vertices", [&] { place_vertices(*run.tree, {}); });
-    if (run.has_vertices) attempt(run.issues, "contour", [&] { run.open = contour(*run.tree, &run.rings); });
+        run.has_vertices = attempt_step(run.issues, "place_vertices", [&] { place_vertices(*run.tree, {}); });
+    if (run.has_vertices) attempt_step(run.issues, "contour", [&] { run.open = contour(*run.tree, &run.rings); });
     if (run.open)
         for (int k = 0; k < 2; ++k)
-            attempt(run.issues, "fill_poles", [&] {
+            attempt_step(run.issues, "fill_poles", [&] {
                 PolygonSoup s = *run.open;
                 run.fill[k] = fill_poles(s, run.rings, f, run.origin,
                                          k == 0 ? PoleFill::normal_projection : PoleFill::vertical_projection);
@@ -357,8 +263,8 @@ CartRun run_cartesian(const ScalarField& f, int level, double tau = 0.01, double
     p.max_level = level;
     p.tau = tau;
     p.simplify_tolerance = simplify_tolerance;
-    attempt(run.issues, "dual_contour_cartesian", [&] { run.soup = dual_contour_cartesian(f, p, &run.stats); });
-    attempt(run.issues, "build_octree", [&] { run.tree = std::make_shared<Octree>(build_octree(f, p)); });
+    attempt_step(run.issues, "dual_contour_cartesian", [&] { run.soup = dual_contour_cartesian(f, p, &run.stats); });
+    attempt_step(run.issues, "build_octree", [&] { run.tree = std::make_shared<Octree>(build_octree(f, p)); });
     return run;
 }
 
@@ -393,12 +299,6 @@ struct Demo {
         return cart.at(level);
     }
     dvec3 model_up() const { return in.is_mesh ? dvec3(0, 1, 0) : dvec3(0, 0, 1); }
-};
-
-struct Frame {
-    gr::Scene scene;
-    gr::Camera camera;
-    std::string status;
 };
 
 // Adds a soup to the scene, recording a bad soup (from student code) instead of throwing.
@@ -471,8 +371,8 @@ Frame draw_cells(Demo& d) {
     // the surface behind the slice
     const PolygonSoup* mesh = run.filled[0] ? &*run.filled[0] : run.open ? &*run.open : nullptr;
     if (mesh) {
-        const PolygonSoup back = d.equator ? cut(*mesh, [&](const dvec3& c) { return to_theta(c - o) > theta_s; })
-                                           : cut(*mesh, [&](const dvec3& c) { return glm::dot(c - o, normal) > 0; });
+        const PolygonSoup back = d.equator ? gr::keep_faces(*mesh, [&](const dvec3& c) { return to_theta(c - o) > theta_s; })
+                                           : gr::keep_faces(*mesh, [&](const dvec3& c) { return glm::dot(c - o, normal) > 0; });
         add_soup(out.scene, issues, back, {.color = kGrey, .smooth = false, .wireframe = false});
     }
     out.scene.add_lines(section, kSection, 1.2f);
@@ -502,7 +402,7 @@ Frame draw_origin(Demo& d, bool full_path_in_view = true) {
     const dvec3 x0 = surface_point(f);
     std::vector<dvec3> path{x0};
     const OriginParams params{.unit = h, .delta = d.delta, .margin = d.margin};
-    attempt(issues, "correct_origin", [&] { path = correct_origin(f, x0, params); });
+    attempt_step(issues, "correct_origin", [&] { path = correct_origin(f, x0, params); });
     if (path.empty()) path = {x0};
     const int total = int(path.size()) - 1;
     const int shown = d.steps < 0 ? total : std::min(d.steps, total);
@@ -534,9 +434,7 @@ Frame draw_origin(Demo& d, bool full_path_in_view = true) {
     if (!seg.empty()) out.scene.add_lines(seg, kStep, 3.0f);
     out.scene.add_points(pts, cols, 14.0f);
     // look at the plane face on: the square [−R, R]² fills the shorter image side
-    out.camera = camera_from(box_around(c, R), nrm, w);
-    out.camera.target = vec3(c);
-    out.camera.distance = float((full_path_in_view ? 0.8 : 1.0) * R / std::tan(glm::radians(out.camera.fov_deg) * 0.5));
+    out.camera = gr::close_up(camera_from(box_around(c, R), nrm, w), c, (full_path_in_view ? 0.8 : 1.0) * R);
     std::ostringstream st;
     st << "x0 on the surface " << fmt(x0) << ", f(x0) = " << fmt(f.value(x0), 2) << "; h = " << fmt(h) << ", δ = "
        << fmt(d.delta) << ", margin = " << fmt(d.margin) << " h | step " << shown << " of " << total << ": x = "
@@ -584,7 +482,7 @@ Frame draw_poles(Demo& d, int fill, int zoom) {
         for (auto v : r.ring)
             if (v < run.open->n_vertices()) ring_pts.push_back(vec3(run.open->positions[v]));
     if (fill == 0) {
-        const auto hole = boundary_segments(*run.open);
+        const auto hole = gr::boundary_edges(*run.open);
         if (!hole.empty()) out.scene.add_lines(hole, kHole, 3.5f);
     }
     if (!ring_pts.empty()) out.scene.add_points(ring_pts, kHole, 8.0f);
@@ -606,9 +504,8 @@ Frame draw_poles(Demo& d, int fill, int zoom) {
         }
         rad = std::max({3.0 * rad, 0.5 * (ring->r_hi - ring->r_lo), 1e-9});
         const double tilt = 0.7;  // from above, to look into the hole
-        out.camera = camera_from(box_around(c, rad), dvec3(0.0, -1.0, zoom == 0 ? tilt : -tilt), dvec3(0, 0, 1));
-        out.camera.target = vec3(c);
-        out.camera.distance = float(rad / std::tan(glm::radians(out.camera.fov_deg) * 0.5));
+        out.camera = gr::close_up(camera_from(box_around(c, rad), dvec3(0.0, -1.0, zoom == 0 ? tilt : -tilt), dvec3(0, 0, 1)),
+                                  c, rad);
     } else {
         out.camera = camera_from(d.f().bounds(), dvec3(0.3, -1.0, 0.35), dvec3(0, 0, 1));
     }
@@ -705,18 +602,18 @@ Frame draw_octree(Demo& d) {
             for (int k = 1; k < 8 && !sign_change; ++k) sign_change = inside(t.value(t.corner(nd, k))) != in0;
         }
         if (sign_change && lo[ax] == is) {
-            add_box(cells, a, c);
+            gr::add_box_edges(cells, a, c);
             continue;
         }
         dvec3 a2 = a, c2 = c;
         a2[ax] = c2[ax] = ys;
         std::vector<vec3> box;
-        add_box(box, a2, c2);
+        gr::add_box_edges(box, a2, c2);
         for (std::size_t i = 0; i < box.size(); i += 2)
             if (box[i] != box[i + 1]) section.push_back(box[i]), section.push_back(box[i + 1]);
     }
     if (cr.soup) {
-        const PolygonSoup back = cut(*cr.soup, [&](const dvec3& p) { return p[ax] > ys; });
+        const PolygonSoup back = gr::keep_faces(*cr.soup, [&](const dvec3& p) { return p[ax] > ys; });
         add_soup(out.scene, issues, back, {.color = kGrey, .smooth = false});
     }
     out.scene.add_lines(section, kSection, 1.2f);
@@ -746,55 +643,14 @@ Frame draw(Demo& d) {
 
 // ---- figures ----------------------------------------------------------------------------------------------------------
 
-// Places two images side by side with a thin grey gap.
-gr::Image side_by_side(const gr::Image& a, const gr::Image& b) {
-    const int gap = 6;
-    gr::Image out;
-    out.width = a.width + gap + b.width;
-    out.height = std::max(a.height, b.height);
-    out.rgba.assign(std::size_t(4) * out.width * out.height, 255);
-    auto blit = [&](const gr::Image& im, int x0) {
-        for (int y = 0; y < im.height; ++y)
-            std::copy_n(im.rgba.data() + std::size_t(4) * y * im.width, std::size_t(4) * im.width,
-                        out.rgba.data() + std::size_t(4) * (std::size_t(y) * out.width + x0));
-    };
-    for (int y = 0; y < out.height; ++y)
-        for (int x = a.width; x < a.width + gap; ++x)
-            for (int c = 0; c < 3; ++c) out.rgba[std::size_t(4) * (std::size_t(y) * out.width + x) + c] = 200;
-    blit(a, 0);
-    blit(b, a.width + gap);
-    return out;
-}
-
-struct FigureWriter {
-    std::filesystem::path dir;
-    int width, height;
-    int written = 0;
-    void write(const std::string& name, const Frame& fr) {
-        gr::render_png(fr.scene, fr.camera, dir / name, width, height);
-        report(name, fr.status);
-    }
-    void write(const std::string& name, const gr::Image& im, const std::string& status) {
-        im.write_png(dir / name);
-        report(name, status);
-    }
-    void report(const std::string& name, const std::string& status) {
-        ++written;
-        std::cout << "wrote " << (dir / name).string() << "  — " << status << std::endl;
-    }
-};
-
 Input load_first(std::initializer_list<const char*> names, const char* fallback) {
     for (const char* n : names)
         if (geolab::model_path(n)) return load(n);
     return load(fallback);
 }
 
-int render_figures(const std::string& dir_name, int width, int height) {
-    const auto t0 = std::chrono::steady_clock::now();
-    std::filesystem::path dir(dir_name);
-    std::filesystem::create_directories(dir);
-    FigureWriter w{dir, width, height};
+int render_figures(gr::FigureWriter w) {
+    const int width = w.width(), height = w.height();
 
     // (a) the spherical octree's curved cells around a surface (meridian slice), and a θ-band
     {
@@ -817,10 +673,9 @@ int render_figures(const std::string& dir_name, int width, int height) {
         d.level = 4;
         d.wire = true;
         const int fw = width / 2, fh = height;
-        FigureWriter half{dir, fw, fh};
         w.write("poles_none.png", draw_poles(d, 0, 0));
         const Frame a = draw_poles(d, 1, 0), b = draw_poles(d, 2, 0);
-        w.write("poles_fill.png", side_by_side(gr::render_image(a.scene, a.camera, fw, fh), gr::render_image(b.scene, b.camera, fw, fh)),
+        w.write("poles_fill.png", gr::hstack({gr::render_image(a.scene, a.camera, fw, fh), gr::render_image(b.scene, b.camera, fw, fh)}, 6),
                 "left normal_projection, right vertical_projection | " + a.status);
         w.write("poles_whole.png", draw_poles(d, 1, 2));
     }
@@ -845,7 +700,7 @@ int render_figures(const std::string& dir_name, int width, int height) {
         const int fw = width / 2;
         std::string status = "left: QEF minimiser (τ = 0.01), right: mass point (τ = 10, every eigenvalue dropped); level 3";
         if (issues.any()) status += " | " + issues.str();
-        w.write("qef_corner.png", side_by_side(gr::render_image(a.scene, a.camera, fw, height), gr::render_image(b.scene, b.camera, fw, height)),
+        w.write("qef_corner.png", gr::hstack({gr::render_image(a.scene, a.camera, fw, height), gr::render_image(b.scene, b.camera, fw, height)}, 6),
                 status);
     }
     // (f) the Cartesian octree's refinement band
@@ -854,9 +709,7 @@ int render_figures(const std::string& dir_name, int width, int height) {
         d.level = 5;
         w.write("octree_band.png", draw_octree(d));
     }
-    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    std::cout << w.written << " figures in " << dir.string() << " (" << fmt(s, 3) << " s)\n";
-    return 0;
+    return w.finish();
 }
 
 // ---- the window ------------------------------------------------------------------------------------------------------
@@ -915,47 +768,29 @@ std::string short_keys(const Demo& d) {
     return s + ", Esc";
 }
 
-int run_window(Demo& d, int frames, const std::string& screenshot, const std::string& keys) {
-    gr::Viewer viewer("geolab demo 09: spherical dual contouring", 960, 720);
-    std::cout << kKeys << "\n";
-    auto refresh = [&](bool reframe) {
-        Frame fr = draw(d);
-        const std::string status = std::string(kViewName[int(d.view)]) + ": " + fr.status +
-                                   (d.message.empty() ? "" : " | " + d.message);
-        viewer.set_scene(std::move(fr.scene), false);
-        if (reframe) viewer.set_camera(fr.camera);
-        viewer.set_status(status + short_keys(d));
-        std::cout << status << std::endl;
-    };
-    refresh(true);
-    viewer.on_key([&](int key) { refresh(on_key(d, key)); });
-    if (frames > 0) {  // scripted: keys, a few frames, a screenshot
-        for (char c : keys) {
-            if (c == 'S' || c == 's') {  // as the window's S key
-                viewer.run_frames(1);
-                std::cout << "wrote " << viewer.save_screenshot().string() << "\n";
-                continue;
-            }
-            refresh(on_key(d, c == '_' ? ' ' : std::toupper(static_cast<unsigned char>(c))));
-        }
-        viewer.run_frames(frames);
-        if (!screenshot.empty()) {
-            viewer.screenshot(screenshot);
-            std::cout << "wrote " << screenshot << "\n";
-        }
-        return 0;
-    }
-    viewer.run();
-    return 0;
+int run_window(const gr::DemoProgram& program, Demo& d) {
+    return program.show({.title = "geolab demo 09: spherical dual contouring",
+                         .draw =
+                             [&] {
+                                 Frame fr = draw(d);
+                                 fr.status = std::string(kViewName[int(d.view)]) + ": " + fr.status +
+                                             (d.message.empty() ? "" : " | " + d.message);
+                                 return fr;
+                             },
+                         .key = [&](int key) { return on_key(d, key); },
+                         .key_hint = [&] { return short_keys(d); }});
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app{"Lab 09 demo: dual contouring on Cartesian and spherical octrees — the curved cells, the origin "
-                 "correction (eq. 6), the polar holes and their fills, Cartesian vs spherical meshes."};
-    std::string input, png, figures, screenshot, keys, view = "cells", fill = "normal";
-    int level = 5, width = 1000, frames = 0, slice = 0, steps = -1;
+    gr::DemoProgram program("demo_09_spherical_dc",
+                            "Lab 09 demo: dual contouring on Cartesian and spherical octrees — the curved cells, the "
+                            "origin correction (eq. 6), the polar holes and their fills, Cartesian vs spherical meshes.",
+                            kKeys, 1000);
+    CLI::App& app = program.cli();
+    std::string input, view = "cells", fill = "normal";
+    int level = 5, slice = 0, steps = -1;
     double delta = 1.5, margin = 2.0;
     bool equator = false, no_wire = false;
     app.add_option("input", input,
@@ -976,25 +811,10 @@ int main(int argc, char** argv) {
     app.add_option("--delta", delta, "Origin view: δ of eq. (6), in units of h")->capture_default_str();
     app.add_option("--margin", margin, "Origin view: stop when |f| ≥ margin·h")->capture_default_str();
     app.add_flag("--no-wireframe", no_wire, "Do not draw the polygon edges");
-    app.add_option("--png", png, "Render the view into this PNG instead of opening a window");
-    app.add_option("--figures", figures, "Render the handout's figures into this folder and exit (headless)");
-    app.add_option("--size", width, "PNG width (height = 3/4 of it)")->capture_default_str();
-    std::size_t memory_mb = gr::default_demo_memory_mb();
-    app.add_option("--memory-mb", memory_mb, "Address-space cap for your code, MiB (0: none; default: the grader's)")
-        ->capture_default_str();
-    app.add_option("--frames", frames, "(testing) draw N frames in the window, then exit")->group("");
-    app.add_option("--screenshot", screenshot, "(testing) with --frames: save the window to this PNG")->group("");
-    app.add_option("--keys", keys, "(testing) with --frames: press these keys first ('_' = Space)")->group("");
-    app.footer(kKeys);
-    CLI11_PARSE(app, argc, argv);
-    const int height = width * 3 / 4;
-    if (!gr::limit_demo_memory(memory_mb)) std::cerr << "demo_09_spherical_dc: could not cap the memory; running without\n";
+    if (const auto status = program.parse(argc, argv)) return *status;
 
-    try {
-        if (!figures.empty()) {
-            gr::check_figure_dir(figures);
-            return render_figures(figures, width, height);
-        }
+    return program.run([&] {
+        if (!program.figures().empty()) return render_figures(program.figure_writer());
         Demo d{load(input.empty() ? "blob" : input)};
         d.level = level;
         const char* views[] = {"", "cells", "origin", "poles", "compare", "octree"};
@@ -1004,24 +824,9 @@ int main(int argc, char** argv) {
         d.slice = slice, d.equator = equator, d.steps = steps, d.delta = delta, d.margin = margin, d.wire = !no_wire;
         std::cout << "demo 09: " << d.in.name << (d.in.is_mesh ? " (signed distance to the mesh)" : "") << ", level "
                   << d.level << ", view " << kViewName[int(d.view)] << "\n";
-        if (!png.empty()) {
-            const Frame fr = draw(d);
-            gr::render_png(fr.scene, fr.camera, png, width, height);
-            std::cout << fr.status << "\nwrote " << png << "\n";
-            return 0;
-        }
-        try {
-            return run_window(d, frames, screenshot, keys);
-        } catch (const gr::NoDisplay& e) {
-            std::cerr << "demo_09_spherical_dc: " << e.what() << "\n(render headless with --png FILE, e.g. --view "
-                      << views[int(d.view)] << " --png view.png)\n";
-            return 1;
-        }
-    } catch (const std::bad_alloc&) {
-        std::cerr << "demo_09_spherical_dc: " << gr::memory_limit_message("the demo") << "\n";
-        return 1;
-    } catch (const std::exception& e) {
-        std::cerr << "demo_09_spherical_dc: " << e.what() << "\n";
-        return 1;
-    }
+        if (!program.png().empty()) return program.write_png(draw(d));
+        program.no_display_hint = std::string("(render headless with --png FILE, e.g. --view ") + views[int(d.view)] +
+                                  " --png view.png)";
+        return run_window(program, d);
+    });
 }
