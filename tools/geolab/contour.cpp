@@ -20,12 +20,14 @@
 #include <thread>
 #include <vector>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
 #ifdef GEOLAB_HAS_LAB_09
 #include "geolab/dual_contouring.hpp"
+#include "geolab/surface_checks.hpp"
 #include "geolab/implicits.hpp"
 #include "geolab/io.hpp"
 #include "geolab/mesh_field.hpp"
@@ -82,6 +84,7 @@ struct Input {
     std::shared_ptr<const ScalarField> field;
     std::shared_ptr<const MeshField> mesh_field;  // == field for meshes
     double read_seconds = 0.0, field_seconds = 0.0;
+    std::string warning;  // set when a mesh input cannot bound a solid (flat, open or zero volume)
 };
 
 std::string unknown_input_message(const std::string& arg) {
@@ -121,6 +124,19 @@ Input load_input(const std::string& arg, std::ostream* log) {
         throw std::runtime_error("cannot read " + arg + ": " + e.what());
     }
     in.read_seconds = seconds_since(t0);
+    {
+        // a flat or zero-volume input has no inside: its winding-number field never crosses ½ cleanly, and dual
+        // contouring returns at best a zero-volume double sheet around it; say so instead of reporting a surface
+        glm::dvec3 lo(INFINITY), hi(-INFINITY);
+        for (const auto& p : in.mesh->positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+        const double diagonal = in.mesh->positions.empty() ? 0.0 : glm::length(hi - lo);
+        const double volume = dc::signed_volume(*in.mesh);
+        if (!(std::abs(volume) > 1e-6 * diagonal * diagonal * diagonal))
+            in.warning = arg + " encloses no volume (|V| = " + fmt("%.3g", std::abs(volume)) +
+                         ", bounding-box diagonal " + fmt("%.3g", diagonal) +
+                         "): a flat or open input has no inside, and the output is not a solid's surface";
+        if (log && !in.warning.empty()) *log << "  warning: " << in.warning << std::endl;
+    }
     if (log)
         *log << "  building the mesh field (BVH + fast winding numbers) of " << grouped(in.mesh->n_faces())
              << " faces ..." << std::endl;
@@ -143,6 +159,7 @@ struct Run {
     PolygonSoup soup;
     dc::DcStats stats;
     dc::MeshCheck check;
+    SurfaceCheck surface;  // lib's full count (exact self-intersections, non-manifold vertices, zero-area faces ...)
     glm::dvec3 origin_start{0.0};
     std::string origin_start_what;
     double cell = 0.0;       // Cartesian: the finest cell's side; spherical: the finest radial step
@@ -196,6 +213,7 @@ Run run_dc(const Input& in, dc::Coordinates octree, int level, dc::PoleFill::Met
     }
     t0 = Clock::now();
     r.check = dc::check_mesh(r.soup);
+    r.surface = check_surface(r.soup);
     r.max_abs_f = dc::max_abs_value(f, r.soup);
     r.volume = dc::signed_volume(r.soup);
     r.check_seconds = seconds_since(t0);
@@ -313,6 +331,8 @@ nlohmann::json run_json(const Input& in, const Run& r, const std::string& out, d
                            {"vertices", in.mesh->n_vertices()},
                            {"faces", in.mesh->n_faces()},
                            {"volume", dc::signed_volume(*in.mesh)}});
+    j["warnings"] = nlohmann::json::array();
+    if (!in.warning.empty()) j["warnings"].push_back(in.warning);
     j["octree"] = octree_name(r.octree);
     j["level"] = r.level;
     j["vertices"] = r.soup.n_vertices();
@@ -321,7 +341,18 @@ nlohmann::json run_json(const Input& in, const Run& r, const std::string& out, d
                    {"non_manifold_edges", r.check.non_manifold_edges},
                    {"misoriented_edges", r.check.misoriented_edges},
                    {"degenerate_faces", r.check.degenerate_faces},
-                   {"closed_manifold", r.check.closed_manifold()},
+                   {"non_manifold_vertices", r.surface.non_manifold_vertices},
+                   {"zero_area_faces", r.surface.zero_area_faces},
+                   {"coincident_vertices", r.surface.coincident_vertices},
+                   {"components", r.surface.components},
+                   {"euler_characteristic", r.surface.euler_characteristic},
+                   {"self_intersecting_pairs", r.surface.self_intersecting_pairs()},
+                   {"self_intersecting_pairs_by_kind",
+                    {{"disjoint", r.surface.intersecting_disjoint},
+                     {"vertex_sharing", r.surface.intersecting_vertex_sharing},
+                     {"edge_sharing", r.surface.intersecting_edge_sharing}}},
+                   // every count above must allow it (lib's check_surface), not only the edge counts
+                   {"closed_manifold", r.surface.closed_manifold()},
                    {"max_abs_f", r.max_abs_f},
                    {"cell", r.cell},
                    {"max_abs_f_per_cell", r.cell > 0 ? r.max_abs_f / r.cell : 0.0},
@@ -379,7 +410,13 @@ void print_run(const Input& in, const Run& r, const std::string& out, dc::PoleFi
     o << "checks      boundary edges " << r.check.boundary_edges << ", non-manifold edges "
       << r.check.non_manifold_edges << ", misoriented edges " << r.check.misoriented_edges
       << ", degenerate faces " << r.check.degenerate_faces << "\n"
-      << "            closed manifold: " << (r.check.closed_manifold() ? "yes" : "no") << "\n"
+      << "            non-manifold vertices " << r.surface.non_manifold_vertices << ", zero-area faces "
+      << r.surface.zero_area_faces << ", coincident vertices " << r.surface.coincident_vertices << ", components "
+      << r.surface.components << ", χ " << r.surface.euler_characteristic << "\n"
+      << "            self-intersecting face pairs " << r.surface.self_intersecting_pairs() << " ("
+      << r.surface.intersecting_disjoint << " disjoint, " << r.surface.intersecting_vertex_sharing
+      << " sharing a vertex, " << r.surface.intersecting_edge_sharing << " sharing an edge; exact predicates)\n"
+      << "            closed manifold: " << (r.surface.closed_manifold() ? "yes" : "no") << "\n"
       << "            max |f(v)| " << fmt("%.3g", r.max_abs_f) << " = " << fmt("%.3g", r.max_abs_f / r.cell)
       << " × the " << (r.octree == dc::Coordinates::cartesian ? "cell size " : "radial cell step ")
       << fmt("%.3g", r.cell) << "\n"
@@ -391,6 +428,7 @@ void print_run(const Input& in, const Run& r, const std::string& out, dc::PoleFi
     o << "field build " << fmt("%.3f", in.field_seconds) << " s, contour " << fmt("%.3f", r.contour_seconds)
       << " s, checks " << fmt("%.3f", r.check_seconds) << " s\n";
     o << "output      " << (out.empty() ? "not written (no --out)" : out) << "\n";
+    if (!in.warning.empty()) o << "warning     " << in.warning << "\n";
 }
 
 int run_contour(const std::string& arg, const std::string& octree, int level, const std::string& out, bool as_json,
@@ -452,6 +490,7 @@ struct Cell {  // one (model, level, octree) of the table
     bool run = false;
     std::string skipped;  // reason when not run
     std::size_t vertices = 0, faces = 0, boundary = 0, non_manifold = 0, misoriented = 0;
+    std::size_t non_manifold_vertices = 0, zero_area = 0, self_pairs = 0;  // lib's check_surface
     bool closed = false;
     double seconds = 0.0;
     double max_abs_f_cells = 0.0;
@@ -787,7 +826,10 @@ int run_table1(const std::vector<int>& levels_in, const std::vector<std::string>
                     c.boundary = r.check.boundary_edges;
                     c.non_manifold = r.check.non_manifold_edges;
                     c.misoriented = r.check.misoriented_edges;
-                    c.closed = r.check.closed_manifold();
+                    c.non_manifold_vertices = r.surface.non_manifold_vertices;
+                    c.zero_area = r.surface.zero_area_faces;
+                    c.self_pairs = r.surface.self_intersecting_pairs();
+                    c.closed = r.surface.closed_manifold();
                     c.seconds = r.contour_seconds;
                     c.max_abs_f_cells = r.cell > 0 ? r.max_abs_f / r.cell : 0.0;
                     c.collapses = r.stats.collapses;
@@ -908,13 +950,16 @@ int run_table1(const std::vector<int>& levels_in, const std::vector<std::string>
           "Per octree (C = Cartesian, S = spherical): H and mean = two-sided sampled Hausdorff and mean distance "
           "between output and input, % of the bounding-box diagonal; time = the dual contouring call (octree, "
           "vertices, simplification / pole filling, polygons; the field is built once per model, see below); "
-          "boundary / non-manifold = edges in one face / in more than two faces; max |f| = the largest |distance| of "
+          "boundary / non-manifold = edges in one face / in more than two faces; nm vertices = vertices whose faces "
+          "form more than one fan; zero-area = faces of exactly collinear vertices; self-int. = pairs of faces that "
+          "meet other than in their shared vertices and edge (exact predicates); max |f| = the largest |distance| of "
           "an output vertex to the input, in finest cells (Cartesian cell side, spherical radial step); "
           "collapses = Cartesian simplification collapses; rings = polar holes filled; origin steps = eq. (6) "
           "steps.\n\n"
           "| model | level | H C (%) | H S (%) | mean C (%) | mean S (%) | time C (s) | time S (s) | boundary C / S | "
-          "non-manifold C / S | max \\|f\\| C / S (cells) | collapses | rings | origin steps |\n"
-          "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+          "non-manifold C / S | nm vertices C / S | zero-area C / S | self-int. C / S | max \\|f\\| C / S (cells) | "
+          "collapses | rings | origin steps |\n"
+          "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
     for (const auto& m : models)
         for (int level : levels) {
             const auto& cc = results[m][level];
@@ -934,6 +979,12 @@ int run_table1(const std::vector<int>& levels_in, const std::vector<std::string>
                << v(S, [](const Cell& c) { return std::to_string(c.boundary); }) << " | "
                << v(C, [](const Cell& c) { return std::to_string(c.non_manifold); }) << " / "
                << v(S, [](const Cell& c) { return std::to_string(c.non_manifold); }) << " | "
+               << v(C, [](const Cell& c) { return std::to_string(c.non_manifold_vertices); }) << " / "
+               << v(S, [](const Cell& c) { return std::to_string(c.non_manifold_vertices); }) << " | "
+               << v(C, [](const Cell& c) { return std::to_string(c.zero_area); }) << " / "
+               << v(S, [](const Cell& c) { return std::to_string(c.zero_area); }) << " | "
+               << v(C, [](const Cell& c) { return std::to_string(c.self_pairs); }) << " / "
+               << v(S, [](const Cell& c) { return std::to_string(c.self_pairs); }) << " | "
                << v(C, [](const Cell& c) { return fmt("%.2f", c.max_abs_f_cells); }) << " / "
                << v(S, [](const Cell& c) { return fmt("%.2f", c.max_abs_f_cells); }) << " | "
                << v(C, [](const Cell& c) { return std::to_string(c.collapses); }) << " | "
