@@ -13,7 +13,7 @@ main_job=1
 
 packages=(build-essential cmake ninja-build pkg-config git
           libglm-dev libglfw3-dev libosmesa6-dev libgl-dev doctest-dev libstb-dev nlohmann-json3-dev
-          libcli11-dev libeigen3-dev libbenchmark-dev libopenmesh-dev libopenvdb-dev libboost-dev libtbb-dev
+          libcli11-dev libeigen3-dev libgmp-dev libbenchmark-dev libopenmesh-dev libopenvdb-dev libboost-dev libtbb-dev
           xvfb xauth zip unzip python3  # python3, xvfb: the demos test reads PNGs and opens a window
           clang-tools)  # clang-query: the grader's source-level check of forbidden calls
 missing=()
