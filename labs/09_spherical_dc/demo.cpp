@@ -90,6 +90,7 @@ struct Input {
     std::string name;
     geolab::FieldPtr field;
     bool is_mesh = false;  // a MeshField (signed distance to a mesh; y up in the CGAL models)
+    std::vector<dvec3> vertices;  // a mesh's vertex positions (the spherical origin starts at their enclosing sphere)
 };
 
 std::string implicit_list() {
@@ -109,7 +110,7 @@ Input load(const std::string& arg) {
         throw std::runtime_error("'" + arg + "' is not a named implicit (" + implicit_list() +
                                  "), a mesh file, or a fetched model (run tools/fetch_models.sh for bunny00, cow, ...)");
     const PolygonSoup soup = geolab::read_mesh(*path);
-    return {path->stem().string(), std::make_shared<geolab::MeshField>(soup), true};
+    return {path->stem().string(), std::make_shared<geolab::MeshField>(soup), true, soup.positions};
 }
 
 // ---- geometry helpers (the demo's own, so that drawing does not depend on the student's to_cartesian) ----------
@@ -201,7 +202,7 @@ const char* kFillName[3] = {"none", "normal_projection", "vertical_projection"};
 // The spherical pipeline step by step (what dual_contour_spherical chains), keeping what the views draw.
 struct SphRun {
     Issues issues;
-    std::vector<dvec3> path;  // correct_origin's steps from the centre of bounds()
+    std::vector<dvec3> path;  // correct_origin's steps from the start (handout §5: the origin's rule)
     dvec3 origin{0.0};
     double unit = 0.0, r_max = 0.0;
     std::shared_ptr<Octree> tree;
@@ -213,17 +214,22 @@ struct SphRun {
     double seconds = 0.0;
 };
 
-// Same defaults as dual_contour_spherical: origin = centre of bounds() moved by correct_origin with unit
-// h = largest extent / 2^L; r_max = 1.05 × the distance to the farthest corner of bounds(); r_min = 0.
-SphRun run_spherical(const ScalarField& f, int level) {
+// The origin's rule (handout §5), as geolab contour and table1 apply it: a mesh starts at the centre of the smallest
+// enclosing sphere of its vertices (the paper), a field without vertices at the centre of bounds()
+// (dual_contour_spherical's default); correct_origin then moves it with unit h = largest extent / 2^L.
+// r_max = 1.05 × the distance to the farthest corner of bounds(); r_min = 0.
+SphRun run_spherical(const ScalarField& f, int level, const std::vector<dvec3>& vertices) {
     const auto t0 = std::chrono::steady_clock::now();
     SphRun run;
     const geolab::Box b = f.bounds();
     const dvec3 ext = b.hi - b.lo;
     run.unit = std::max({ext.x, ext.y, ext.z}) / double(1 << level);
-    run.path = {b.center()};
+    dvec3 start = b.center();
+    if (!vertices.empty())
+        attempt_step(run.issues, "minimal_enclosing_sphere", [&] { start = minimal_enclosing_sphere(vertices).center; });
+    run.path = {start};
     attempt_step(run.issues, "correct_origin", [&] {
-        auto p = correct_origin(f, b.center(), {.unit = run.unit});
+        auto p = correct_origin(f, start, {.unit = run.unit});
         if (!p.empty()) run.path = std::move(p);
     });
     run.origin = run.path.back();
@@ -291,7 +297,7 @@ struct Demo {
 
     const ScalarField& f() const { return *in.field; }
     const SphRun& spherical() {
-        if (!sph.count(level)) sph.emplace(level, run_spherical(f(), level));
+        if (!sph.count(level)) sph.emplace(level, run_spherical(f(), level, in.vertices));
         return sph.at(level);
     }
     const CartRun& cartesian() {

@@ -193,7 +193,8 @@ inline Run run_dc(const Input& in, dc::Coordinates octree, int level, dc::PoleFi
         p.max_level = level;
         p.pole_fill = pole_fill;
         if (in.mesh) {
-            // the earlier method's origin: the centre of the smallest enclosing sphere of the vertices
+            // the origin's rule (lab 09 handout §5): a mesh starts at the centre of the smallest enclosing sphere
+            // of its vertices (the paper); a field without vertices at the centre of bounds()
             r.origin_start = dc::minimal_enclosing_sphere(in.mesh->positions).center;
             r.origin_start_what = "centre of the smallest enclosing sphere of the vertices";
             p.origin = r.origin_start;
