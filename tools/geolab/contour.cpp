@@ -65,6 +65,10 @@ nlohmann::json run_json(const Input& in, const Run& r, const std::string& out, d
                           {"origin_start_is", r.origin_start_what},
                           {"origin_steps", r.stats.origin_path.empty() ? 0 : r.stats.origin_path.size() - 1},
                           {"origin", v(r.stats.origin)},
+                          // f < 0: inside the solid. An origin outside is allowed (eq. 6 only moves it off the
+                          // surface) but then every radial ray enters and leaves: see the lab 09 handout §5
+                          {"f_at_origin", in.field->value(r.stats.origin)},
+                          {"origin_inside", in.field->value(r.stats.origin) < 0.0},
                           {"r_min", r.stats.r_min},
                           {"r_max", r.stats.r_max},
                           {"pole_rings", r.stats.pole_rings},
