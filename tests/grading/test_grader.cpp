@@ -408,6 +408,7 @@ TEST_CASE("record and replay: a crash names the input and the last check passed;
     CHECK(walk.messages.front().find("memory limit (1024 MiB) exceeded (std::bad_alloc) in or after call 2 "
                                      "(walk_forever)") == 0);
     CHECK(walk.messages.front().find("an endless walk") != std::string::npos);
-    CHECK(walk.messages.front().find("fixture 'loop'") != std::string::npos);
+    CHECK(walk.messages.front().find("\ninput: fixture 'loop'") != std::string::npos);
+    CHECK(walk.messages.front().find("\nlast check passed: tests/grading/replay_fixture/tests.cpp:") != std::string::npos);
 }
 #endif

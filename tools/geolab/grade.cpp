@@ -73,6 +73,7 @@ int run_submission(const GradeArgs& a) {
     if (!a.figures.empty()) opt.run.figure_dir = std::filesystem::absolute(a.figures);
     opt.run.timeout_s = a.timeout;
     opt.run.memory_mb = a.memory_mb;
+    opt.run.only_test = a.test;
     opt.run.jobs = a.jobs > 0 ? a.jobs : std::max(1u, std::thread::hardware_concurrency());
     if (!a.quiet) std::cerr << "grading " << a.submission << " (lab " << opt.lab << ") ...\n";
     const auto rep = grading::grade_submission(a.submission, opt);

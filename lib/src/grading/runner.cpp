@@ -756,15 +756,27 @@ std::string crash_note(const std::string& output) {
     return note.empty() ? "" : "\n" + note;
 }
 
-// Replace the first message that reports a std::bad_alloc by what it means here.
-void name_memory_limit(TestResult& r, const RunOptions& opt, const std::string& where) {
+// The non-empty lines of `text`, joined by newlines.
+std::string lines_of(const std::string& text) {
+    std::string out;
+    for (std::size_t a = 0, b; a < text.size(); a = b + 1) {
+        b = text.find('\n', a);
+        if (b == std::string::npos) b = text.size();
+        if (b > a) out += (out.empty() ? "" : "\n") + text.substr(a, b - a);
+    }
+    return out;
+}
+
+// Replace the first message that reports a std::bad_alloc by what it means here; its contexts become "input:".
+void name_memory_limit(TestResult& r, const RunOptions& opt, const std::string& where, const std::string& extra = "") {
     for (auto& m : r.messages)
         if (m.find("std::bad_alloc") != std::string::npos) {
             const auto nl = m.find('\n');
-            m = memory_message(opt) + where + memory_cause + (nl == std::string::npos ? "" : m.substr(nl));
+            const std::string input = nl == std::string::npos ? "" : lines_of(m.substr(nl + 1));
+            m = memory_message(opt) + where + memory_cause + (input.empty() ? "" : "\ninput: " + input) + extra;
             return;
         }
-    r.messages.insert(r.messages.begin(), memory_message(opt) + where + memory_cause);
+    r.messages.insert(r.messages.begin(), memory_message(opt) + where + memory_cause + extra);
 }
 
 // Decide the status of a finished child from what the parent saw.
@@ -959,7 +971,8 @@ TestResult run_replayed(const std::filesystem::path& program, const TestInfo& te
     }
     // The performer stopped (crash, time limit, exit): one message replaces the judge's "your program stopped":
     // what happened, where, the input the test was on (its INFO contexts: the fixture) and the last check passed.
-    const std::string found = (input.empty() ? "" : "\ninput: " + input) + (last_check.empty() ? "" : "\n" + last_check);
+    const std::string context = lines_of(input);  // the contexts, one per line
+    const std::string found = (context.empty() ? "" : "\ninput: " + context) + (last_check.empty() ? "" : "\n" + last_check);
     auto override_with = [&](Status s, const std::string& why) {
         r.status = s;
         r.score = 0;
@@ -970,7 +983,7 @@ TestResult run_replayed(const std::filesystem::path& program, const TestInfo& te
             r.messages.insert(r.messages.begin(), why);
         }
     };
-    if (out_of_memory && r.status == Status::failed && !perf.timed_out && !perf.signal) name_memory_limit(r, opt, where);
+    if (out_of_memory && r.status == Status::failed && !perf.timed_out && !perf.signal) name_memory_limit(r, opt, where, last_check.empty() ? "" : "\n" + last_check);
     if (perf.timed_out)
         override_with(Status::timeout, "killed after the time limit (" + seconds_text(test, opt) + ")" + where +
                                             ": an endless loop (a walk that never gets back to its start?), or far too slow?");

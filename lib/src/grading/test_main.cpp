@@ -72,7 +72,7 @@ std::string clip(std::string s, std::size_t n = 2000) {
 }
 
 std::string last_check_text() {
-    if (!g_last_check.file) return "last check passed: none (the test failed before its first check)";
+    if (!g_last_check.file) return "last check passed: none (no check of this test had passed yet)";
     return "last check passed: " + short_path(g_last_check.file) + ":" + std::to_string(g_last_check.line) + ": " +
            g_last_check.macro + "( " + g_last_check.expr + " )";
 }
