@@ -97,7 +97,8 @@ TEST_CASE("messages say what happened") {
     CHECK(result("expects an exception that never comes").messages.at(0).find("did not throw") != std::string::npos);
     CHECK(result("throws an unexpected exception").messages.at(0).find("boom") != std::string::npos);
     CHECK(result("fails an assertion").messages.at(0).find("input: 1 + 1") != std::string::npos);
-    CHECK(result("not implemented").messages.at(0).find("not implemented: answer") != std::string::npos);
+    CHECK(result("not implemented").messages.at(0).find("not implemented: answer") == 0);
+    CHECK(result("not implemented").messages.at(0).find("\nin tests/grading/fixture_tests.cpp:") != std::string::npos);
     CHECK(result("exits early with status 0").messages.at(0).find("exit") != std::string::npos);
     CHECK(result("hangs").seconds < 5);
     CHECK(result("floods stdout").output.size() <= (256u << 10));
@@ -122,6 +123,7 @@ TEST_CASE("failure reports a student can act on") {
     const std::string q = quiet.str();
     CHECK(q.find("not implemented: not implemented") == std::string::npos);
     CHECK(q.find("unexpected exception: not implemented") == std::string::npos);
+    CHECK(q.find("threw: \"not implemented") == std::string::npos);
     CHECK(q.find("        not implemented: answer2") != std::string::npos);
     CHECK(q.find("        input: fixture 'triangle'") != std::string::npos);
     CHECK(q.find("        last check passed: ") != std::string::npos);

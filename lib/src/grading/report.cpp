@@ -109,6 +109,7 @@ void print_console(std::ostream& os, const std::vector<LabReport>& labs, HiddenP
         std::size_t n = 0;
         bool first = true;
         while (std::getline(lines, line)) {
+            if (line.empty()) continue;
             if (!verbose && ++n > 40) {
                 os << indent << "... (--verbose shows the whole message)\n";
                 break;
