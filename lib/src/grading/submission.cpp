@@ -744,11 +744,18 @@ SubmissionReport grade_submission(const fs::path& submission, const SubmissionOp
             if (unzip.empty()) throw std::runtime_error("unzip not found (apt-get install unzip)");
             CommandResult u = run_plain({unzip, "-qq", "-o", fs::absolute(submission).string(), "-d", sub_dir.string()}, 120);
             if (u.exit_code != 0 && u.exit_code != 1) {  // 1: warnings (e.g. skipped ../ entries)
-                std::string why = u.output;
-                while (!why.empty() && (why.back() == '\n' || why.back() == ' ')) why.pop_back();
+                // unzip's message on one line, without its "[file]" line: the status is one line.
+                std::string why, line;
+                std::istringstream lines(u.output);
+                while (std::getline(lines, line)) {
+                    if (line.empty() || line[0] == '[') continue;
+                    for (std::istringstream words(line); words >> line;) why += (why.empty() ? "" : " ") + line;
+                }
+                if (const auto dot = why.find(". "); dot != std::string::npos) why.resize(dot);  // its first sentence
+                if (why.size() > 200) why.resize(200);
                 return score_zero(SubmissionStatus::unreadable,
-                                  submission.string() + " is not a zip file that can be unpacked (unzip: " +
-                                      clip(why, 300) + "): make the zip again and resubmit");
+                                  submission.string() + " is not a zip file that can be unpacked (unzip: " + why +
+                                      "): make the zip again and resubmit");
             }
         } else if (!fs::is_directory(submission)) {
             return score_zero(SubmissionStatus::unreadable, submission.string() + " is neither a folder nor a zip file");
