@@ -33,6 +33,21 @@ TEST_CASE("aborts" * geolab::points(1)) {
 TEST_CASE("hangs" * geolab::points(1) * geolab::time_limit(1)) {
     for (;;) ::pause();
 }
+TEST_CASE("a stub that escapes the test" * geolab::points(1)) { throw geolab::NotImplemented("answer2"); }
+TEST_CASE("a stub caught then a wrong value" * geolab::points(1)) {
+    int value = 0;
+    try {
+        throw geolab::NotImplemented("helper");
+    } catch (const std::logic_error&) {
+        value = -1;
+    }
+    CHECK(value == 1);
+}
+TEST_CASE("segfaults on a named input" * geolab::points(1)) {
+    INFO("fixture 'triangle'");
+    CHECK(1 + 1 == 2);
+    std::raise(SIGSEGV);
+}
 TEST_CASE("exits early with status 0" * geolab::points(1)) {
     std::exit(0);
 }

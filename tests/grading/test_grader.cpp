@@ -4,6 +4,9 @@
 #include <fstream>
 #include <map>
 #include <set>
+#include <sstream>
+#include <csignal>
+#include <cstdio>
 
 #include <unistd.h>
 
@@ -46,7 +49,7 @@ const geolab::grading::TestResult& result(const std::string& name) {
 TEST_CASE("the grader lists every fixture with its metadata") {
     const auto& rep = fixture_report();
     REQUIRE(rep.error == "");
-    CHECK(rep.results.size() == 17);
+    CHECK(rep.results.size() == 20);
     CHECK(result("hidden and passes").info.hidden);
     CHECK(result("hidden and passes").info.points == 2);
     CHECK(result("fails an assertion").info.hint == "look at the sum");
@@ -60,6 +63,9 @@ TEST_CASE("each misbehaviour is isolated and classified") {
         {"fails an assertion", Status::failed},
         {"expects an exception that never comes", Status::failed},
         {"not implemented", Status::not_implemented},
+        {"a stub that escapes the test", Status::not_implemented},
+        {"a stub caught then a wrong value", Status::failed},
+        {"segfaults on a named input", Status::crashed},
         {"segfaults", Status::crashed},
         {"aborts", Status::crashed},
         {"hangs", Status::timeout},
@@ -82,7 +88,7 @@ TEST_CASE("each misbehaviour is isolated and classified") {
         CHECK(r.score == (status == Status::passed ? r.info.points : 0.0));
     }
     CHECK(fixture_report().score() == 4);
-    CHECK(fixture_report().max_score() == 16);
+    CHECK(fixture_report().max_score() == 19);
 }
 
 TEST_CASE("messages say what happened") {
@@ -91,10 +97,68 @@ TEST_CASE("messages say what happened") {
     CHECK(result("expects an exception that never comes").messages.at(0).find("did not throw") != std::string::npos);
     CHECK(result("throws an unexpected exception").messages.at(0).find("boom") != std::string::npos);
     CHECK(result("fails an assertion").messages.at(0).find("input: 1 + 1") != std::string::npos);
-    CHECK(result("not implemented").messages.at(0).find("not implemented: answer") != std::string::npos);
+    CHECK(result("not implemented").messages.at(0).find("not implemented: answer") == 0);
+    CHECK(result("not implemented").messages.at(0).find("\nin tests/grading/fixture_tests.cpp:") != std::string::npos);
     CHECK(result("exits early with status 0").messages.at(0).find("exit") != std::string::npos);
     CHECK(result("hangs").seconds < 5);
     CHECK(result("floods stdout").output.size() <= (256u << 10));
+}
+
+TEST_CASE("failure reports a student can act on") {
+    // A crash names the input (the test's INFO context) and the last check that passed.
+    const std::string crash = result("segfaults on a named input").messages.at(0);
+    CHECK(crash.find("crashed with SIGSEGV") == 0);
+    CHECK(crash.find("input: fixture 'triangle'") != std::string::npos);
+    CHECK(crash.find("last check passed: tests/grading/fixture_tests.cpp:") != std::string::npos);
+    CHECK(crash.find("CHECK( 1 + 1 == 2 )") != std::string::npos);
+    // The memory cap is named, not std::bad_alloc alone.
+    CHECK(result("allocates without bound").messages.at(0).find("memory limit (1024 MiB) exceeded") == 0);
+    // A stub's message once, without "unexpected exception: " before it; a wrong value after a caught stub fails.
+    CHECK(result("a stub that escapes the test").messages.at(0).find("not implemented: answer2") == 0);
+    CHECK(result("a stub caught then a wrong value").messages.at(0).find("CHECK( value == 1 ) is false") != std::string::npos);
+    // The console: the status word once, whole messages (every line), the rest with --verbose.
+    std::ostringstream quiet, verbose;
+    geolab::grading::print_console(quiet, {fixture_report()}, geolab::grading::HiddenPolicy::show, false);
+    geolab::grading::print_console(verbose, {fixture_report()}, geolab::grading::HiddenPolicy::show, false, true);
+    const std::string q = quiet.str();
+    CHECK(q.find("not implemented: not implemented") == std::string::npos);
+    CHECK(q.find("unexpected exception: not implemented") == std::string::npos);
+    CHECK(q.find("threw: \"not implemented") == std::string::npos);
+    CHECK(q.find("        not implemented: answer2") != std::string::npos);
+    CHECK(q.find("        input: fixture 'triangle'") != std::string::npos);
+    CHECK(q.find("        last check passed: ") != std::string::npos);
+    CHECK(q.find("failed: memory limit (1024 MiB) exceeded") != std::string::npos);
+    CHECK(verbose.str().find("--- what the test printed ---") != std::string::npos);
+    // One test by name (exact, or the one name containing the text); an unknown name lists the tests.
+    geolab::grading::RunOptions one;
+    one.timeout_s = 10;
+    one.only_test = "on a named input";
+    const auto single = geolab::grading::grade_program("fixtures", "student", GEOLAB_FIXTURE_PROGRAM, one);
+    REQUIRE(single.results.size() == 1);
+    CHECK(single.results[0].info.name == "segfaults on a named input");
+    one.only_test = "no such test";
+    const auto none = geolab::grading::grade_program("fixtures", "student", GEOLAB_FIXTURE_PROGRAM, one);
+    CHECK(none.results.empty());
+    CHECK(none.error.find("no test of fixtures is named 'no such test'; its tests:\n  passes") == 0);
+    std::ostringstream error_console;
+    geolab::grading::print_console(error_console, {none}, geolab::grading::HiddenPolicy::show, false);
+    CHECK(error_console.str().find("0 / ?") == std::string::npos);
+}
+
+TEST_CASE("a crash run by hand prints the input and the last check that passed, as the grader does") {
+    const std::string cmd = std::string("'") + GEOLAB_FIXTURE_PROGRAM + "' -tc='segfaults on a named input' 2>&1; echo \"status=$?\"";
+    FILE* p = ::popen(cmd.c_str(), "r");
+    REQUIRE(p);
+    std::string out;
+    char buf[4096];
+    for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, p)) > 0;) out.append(buf, n);
+    ::pclose(p);
+    CAPTURE(out);
+    CHECK(out.find("geolab: crashed with SIGSEGV (Segmentation fault) in test 'segfaults on a named input'") !=
+          std::string::npos);
+    CHECK(out.find("input: fixture 'triangle'") != std::string::npos);
+    CHECK(out.find("last check passed: tests/grading/fixture_tests.cpp:") != std::string::npos);
+    CHECK(out.find("status=" + std::to_string(128 + SIGSEGV)) != std::string::npos);  // the signal still ends it
 }
 
 TEST_CASE("reports: results.json and JUnit are written and well-formed") {
@@ -105,8 +169,8 @@ TEST_CASE("reports: results.json and JUnit are written and well-formed") {
     std::ifstream f(json_path);
     auto j = nlohmann::json::parse(f);
     CHECK(j["score"] == 4);
-    CHECK(j["max_score"] == 16);
-    REQUIRE(j["tests"].size() == 17);
+    CHECK(j["max_score"] == 19);
+    REQUIRE(j["tests"].size() == 20);
     for (const auto& t : j["tests"]) {
         CHECK(t.contains("name"));
         CHECK(t.contains("number"));
@@ -118,7 +182,7 @@ TEST_CASE("reports: results.json and JUnit are written and well-formed") {
     std::ifstream x(junit_path);
     std::string xml((std::istreambuf_iterator<char>(x)), {});
     CHECK(xml.find("<testsuites>") != std::string::npos);
-    CHECK(xml.find("tests=\"17\"") != std::string::npos);
+    CHECK(xml.find("tests=\"20\"") != std::string::npos);
 }
 
 TEST_CASE("a test can attach a picture, which the grader collects") {
@@ -289,7 +353,7 @@ TEST_CASE("record and replay: the judge lists the tests and decides each verdict
     const auto& rep = replay_report();
     REQUIRE(rep.error == "");
     CHECK(rep.isolated);
-    CHECK(rep.results.size() == 12);
+    CHECK(rep.results.size() == 14);
     CHECK(replayed("a timed call is timed by the judge").info.hidden);
     CHECK(replayed("hangs in a call").info.timeout_s == 1);
     const std::map<std::string, Status> expected = {
@@ -326,5 +390,27 @@ TEST_CASE("record and replay: messages name the call the student's program was i
     CHECK(says(replayed("an index out of range stops the judge"), "the test stopped on your code's answers"));
     CHECK(says(replayed("not implemented"), "not implemented: not_written"));
     CHECK(replayed("hangs in a call").seconds < 5);
+}
+
+TEST_CASE("record and replay: a crash names the input and the last check passed; the memory cap is named") {
+    const auto& crash = replayed("crashes on a named input");
+    CHECK(crash.status == Status::crashed);
+    REQUIRE(!crash.messages.empty());
+    CAPTURE(crash.messages.front());
+    CHECK(crash.messages.front().find("crashed with SIGSEGV") == 0);
+    CHECK(crash.messages.front().find("call 2 (crash_in_call)") != std::string::npos);
+    CHECK(crash.messages.front().find("\ninput: fixture 'pair'") != std::string::npos);
+    CHECK(crash.messages.front().find("\nlast check passed: tests/grading/replay_fixture/tests.cpp:") != std::string::npos);
+    CHECK(crash.messages.front().find("CHECK( add(1, 1) == 2 )") != std::string::npos);
+    CHECK(!says(crash, "your program stopped"));
+    const auto& walk = replayed("walks without end");
+    CHECK(walk.status == Status::failed);
+    REQUIRE(!walk.messages.empty());
+    CAPTURE(walk.messages.front());
+    CHECK(walk.messages.front().find("memory limit (1024 MiB) exceeded (std::bad_alloc) in or after call 2 "
+                                     "(walk_forever)") == 0);
+    CHECK(walk.messages.front().find("an endless walk") != std::string::npos);
+    CHECK(walk.messages.front().find("\ninput: fixture 'loop'") != std::string::npos);
+    CHECK(walk.messages.front().find("\nlast check passed: tests/grading/replay_fixture/tests.cpp:") != std::string::npos);
 }
 #endif

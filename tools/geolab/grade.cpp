@@ -21,7 +21,8 @@ struct GradeArgs {
     double timeout = 20;
     std::size_t memory_mb = 4096;
     bool student_view = false;
-    bool quiet = false;
+    bool quiet = false, verbose = false;
+    std::string test;
     std::string submission, lab, work_dir, forbidden, figures;
     bool asan = false, no_course_build = false, allow_unisolated = false;
     double max_seconds = 1200;
@@ -72,21 +73,24 @@ int run_submission(const GradeArgs& a) {
     if (!a.figures.empty()) opt.run.figure_dir = std::filesystem::absolute(a.figures);
     opt.run.timeout_s = a.timeout;
     opt.run.memory_mb = a.memory_mb;
+    opt.run.only_test = a.test;
     opt.run.jobs = a.jobs > 0 ? a.jobs : std::max(1u, std::thread::hardware_concurrency());
     if (!a.quiet) std::cerr << "grading " << a.submission << " (lab " << opt.lab << ") ...\n";
     const auto rep = grading::grade_submission(a.submission, opt);
     std::cout << rep.summary();
-    grading::print_console(std::cout, {rep.lab},
-                           a.student_view ? grading::HiddenPolicy::name_points : grading::HiddenPolicy::show,
-                           ::isatty(1));
+    // A submission that could not be graded says so in its one status line: no table of tests that never ran.
+    using S = grading::SubmissionStatus;
+    if (rep.status == S::ok || rep.status == S::compile_error)
+        grading::print_console(std::cout, {rep.lab},
+                               a.student_view ? grading::HiddenPolicy::name_points : grading::HiddenPolicy::show,
+                               ::isatty(1), a.verbose);
+    else if (rep.status != S::grader_error)
+        std::cout << "score: 0 / " << rep.lab.max_score() << "\n";
     write_submission_reports(rep, a.json, a.junit);
     if (!a.json.empty()) std::cout << "results.json written to " << a.json << "\n";
     if (!a.junit.empty()) std::cout << "JUnit XML written to " << a.junit << "\n";
-    if (rep.status == grading::SubmissionStatus::grader_error) {
-        std::cerr << "geolab: grading " << a.submission << " failed: " << rep.error << "\n";
-        return 2;
-    }
-    return 0;
+    if (rep.status == grading::SubmissionStatus::grader_error) return 2;
+    return rep.status == grading::SubmissionStatus::not_found ? 1 : 0;
 }
 
 int run_grade(const GradeArgs& a) {
@@ -98,7 +102,10 @@ int run_grade(const GradeArgs& a) {
     if (a.solutions && !config::has_solutions)
         throw std::runtime_error("--solutions: this tree has no solutions/ (the student release grades your own code)");
 
+    if (!a.test.empty() && labs.size() != 1)
+        throw std::runtime_error("--test runs one test of one lab: name the lab too (geolab grade 01 --test NAME)");
     grading::RunOptions opt;
+    opt.only_test = a.test;
     opt.timeout_s = a.timeout;
     opt.memory_mb = a.memory_mb;
     opt.jobs = a.jobs > 0 ? a.jobs : std::max(1u, std::thread::hardware_concurrency());
@@ -127,7 +134,7 @@ int run_grade(const GradeArgs& a) {
     }
     grading::print_console(std::cout, reports,
                            a.student_view ? grading::HiddenPolicy::name_points : grading::HiddenPolicy::show,
-                           ::isatty(1));
+                           ::isatty(1), a.verbose);
     if (!a.json.empty()) {
         grading::write_gradescope_json(a.json, reports);
         std::cout << "results.json written to " << a.json << "\n";
@@ -179,6 +186,9 @@ void add_grade(CLI::App& app, int& status) {
     cmd->add_option("--memory-mb", a->memory_mb, "Address-space limit per test, MiB")->capture_default_str();
     cmd->add_flag("--student-view", a->student_view, "Withhold the messages of hidden tests, as students see it");
     cmd->add_flag("--quiet,-q", a->quiet, "No progress lines");
+    cmd->add_flag("--verbose,-v", a->verbose, "Every message of a failed test, uncut, and what the test printed");
+    cmd->add_option("--test,-t", a->test,
+                    "Run one test of the lab: its name as the report prints it, or a part only it contains");
     cmd->add_option("--submission", a->submission,
                     "Grade a student's submission (a folder or a .zip) against the full course, hidden tests included");
     cmd->add_option("--lab", a->lab, "With --submission: the lab it is for (01, 1 or 01_halfedge)");

@@ -1,9 +1,11 @@
 // geolab grade-all SUBMISSIONS --lab NN --csv grades.csv --jobs N: grade a whole class. One submission per
 // sub-folder or zip; per student a folder of results (results.json, junit.xml, log.txt, done.json); resumable:
-// a student whose done.json exists is not graded again; one bad submission never stops the batch.
+// a student whose done.json exists and whose submission has the same content (a hash of its files) is not graded
+// again; a submission that changed since is; one bad submission never stops the batch.
 #include <unistd.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <atomic>
 #include <chrono>
 #include <fstream>
@@ -30,6 +32,7 @@ struct Student {
 
 struct Outcome {  // what done.json holds
     std::string status;
+    std::string content;  // submission_hash() of what was graded
     double score = 0, max_score = 0;
     std::vector<std::pair<std::string, std::pair<double, double>>> tasks;  // task -> (score, max)
 };
@@ -49,7 +52,47 @@ std::vector<Student> find_students(const fs::path& dir) {
 nlohmann::json to_json(const Outcome& o) {
     nlohmann::json tasks = nlohmann::json::array();
     for (const auto& [t, s] : o.tasks) tasks.push_back({{"task", t}, {"score", s.first}, {"max_score", s.second}});
-    return {{"status", o.status}, {"score", o.score}, {"max_score", o.max_score}, {"tasks", tasks}};
+    return {{"status", o.status}, {"score", o.score}, {"max_score", o.max_score}, {"tasks", tasks},
+            {"submission_hash", o.content}};
+}
+
+// The content of a submission, as a hash: a zip's bytes; a folder's files (relative path, kind and bytes of every
+// entry, in path order; a symbolic link by its target). Any change a grading could see changes it.
+std::string submission_hash(const fs::path& p) {
+    std::uint64_t a = 1469598103934665603ull, b = 0x9e3779b97f4a7c15ull;
+    auto add = [&](const std::string& bytes) {
+        for (unsigned char c : bytes) {
+            a = (a ^ c) * 1099511628211ull;
+            b = (b ^ c) * 1099511628211ull;
+        }
+        const std::string len = "|" + std::to_string(bytes.size()) + "|";  // keeps boundaries unambiguous
+        for (unsigned char c : len) a = (a ^ c) * 1099511628211ull, b = (b ^ c) * 1099511628211ull;
+    };
+    auto add_file = [&](const fs::path& f) {
+        std::ifstream in(f, std::ios::binary);
+        std::ostringstream data;
+        data << in.rdbuf();
+        add(data.str());
+    };
+    if (fs::is_directory(p)) {
+        std::vector<fs::path> entries;
+        for (auto it = fs::recursive_directory_iterator(p, fs::directory_options::skip_permission_denied);
+             it != fs::recursive_directory_iterator(); ++it)
+            entries.push_back(it->path());
+        std::sort(entries.begin(), entries.end());
+        for (const auto& e : entries) {
+            const auto st = fs::symlink_status(e);
+            add(fs::relative(e, p).string());
+            if (fs::is_symlink(st)) add("link:" + fs::read_symlink(e).string());
+            else if (fs::is_regular_file(st)) add_file(e);
+            else add(fs::is_directory(st) ? "dir" : "other");
+        }
+    } else {
+        add_file(p);
+    }
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%016llx%016llx", static_cast<unsigned long long>(a), static_cast<unsigned long long>(b));
+    return buf;
 }
 
 bool read_done(const fs::path& file, Outcome& o) {
@@ -58,6 +101,7 @@ bool read_done(const fs::path& file, Outcome& o) {
     auto j = nlohmann::json::parse(f, nullptr, false);
     if (j.is_discarded() || !j.contains("status") || !j.contains("score") || !j.contains("tasks")) return false;
     o.status = j["status"];
+    o.content = j.value("submission_hash", "");
     o.score = j["score"];
     o.max_score = j.value("max_score", 0.0);
     for (const auto& t : j["tasks"]) o.tasks.push_back({t["task"], {t["score"], t["max_score"]}});
@@ -153,12 +197,25 @@ void add_grade_all(CLI::App& app, int& status) {
         std::vector<Outcome> outcomes(students.size());
         std::vector<char> have(students.size(), 0);
         std::vector<std::size_t> todo;
+        // Resume by content: a student is graded again when the submission changed since its done.json.
+        std::vector<std::string> content(students.size());
+        std::size_t changed = 0;
         for (std::size_t i = 0; i < students.size(); ++i) {
-            if (!a->regrade && read_done(results / students[i].name / "done.json", outcomes[i])) have[i] = 1;
-            else todo.push_back(i);
+            content[i] = submission_hash(students[i].submission);
+            const bool done_before = !a->regrade && read_done(results / students[i].name / "done.json", outcomes[i]);
+            // A grader error is the grader's, not the student's: the next run tries again.
+            if (done_before && outcomes[i].content == content[i] && outcomes[i].status != "grader error") {
+                have[i] = 1;
+                continue;
+            }
+            if (done_before && outcomes[i].status != "grader error") ++changed;
+            outcomes[i] = Outcome{};
+            todo.push_back(i);
         }
         std::cerr << "grade-all: " << students.size() << " submissions, " << students.size() - todo.size()
-                  << " already graded, " << todo.size() << " to grade with " << jobs << " job(s)\n";
+                  << " already graded, " << todo.size() << " to grade";
+        if (changed) std::cerr << " (" << changed << " changed since the last run)";
+        std::cerr << " with " << jobs << " job(s)\n";
 
         std::atomic<std::size_t> next{0};
         std::mutex m;
@@ -201,13 +258,14 @@ void add_grade_all(CLI::App& app, int& status) {
                     write_submission_reports(rep, (dir / "results.json").string(), (dir / "junit.xml").string());
                     std::ofstream log(dir / "log.txt");
                     log << "student: " << s.name << "\nsubmission: " << s.submission.string() << "\n" << rep.summary();
-                    grading::print_console(log, {rep.lab}, grading::HiddenPolicy::show, false);
+                    grading::print_console(log, {rep.lab}, grading::HiddenPolicy::show, false, true);
                     o = outcome_of(rep);
                 } catch (const std::exception& e) {
                     o = Outcome{};
                     o.status = "grader error";
                     std::ofstream(dir / "log.txt", std::ios::app) << "grader error: " << e.what() << "\n";
                 }
+                o.content = content[i];
                 // done.json last, atomically: its presence means the student's results are complete.
                 {
                     std::ofstream f(dir / "done.json.tmp");
@@ -258,6 +316,9 @@ void add_grade_all(CLI::App& app, int& status) {
                   << duration(wall);
         if (!todo.empty()) std::cout << " (" << num(busy_seconds / static_cast<double>(todo.size())) << " s per submission)";
         std::cout << "\n";
+        if (counts.count("grader error"))
+            std::cout << counts["grader error"] << " grader error(s): not the students' fault; run the same command again "
+                      << "to grade them again (see their log.txt)\n";
         status = counts.count("grader error") ? 3 : 0;
     });
 }

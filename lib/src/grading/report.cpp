@@ -94,16 +94,34 @@ std::string first_message(const TestResult& r, std::size_t max_chars) {
     return m;
 }
 
-void print_console(std::ostream& os, const std::vector<LabReport>& labs, HiddenPolicy hidden, bool color) {
+void print_console(std::ostream& os, const std::vector<LabReport>& labs, HiddenPolicy hidden, bool color,
+                   bool verbose) {
     auto paint = [&](Status s, const std::string& text) {
         if (!color) return text;
         const char* c = s == Status::passed ? "\033[32m" : s == Status::not_implemented ? "\033[33m" : "\033[31m";
         return std::string(c) + text + "\033[0m";
     };
+    const std::string indent = "        ";
+    // A whole message, every line indented; without --verbose at most 40 lines.
+    auto print_message = [&](const std::string& m, const std::string& first_prefix) {
+        std::istringstream lines(m);
+        std::string line;
+        std::size_t n = 0;
+        bool first = true;
+        while (std::getline(lines, line)) {
+            if (line.empty()) continue;
+            if (!verbose && ++n > 40) {
+                os << indent << "... (--verbose shows the whole message)\n";
+                break;
+            }
+            os << indent << (first ? first_prefix : "") << line << "\n";
+            first = false;
+        }
+    };
     for (const auto& lab : labs) {
         os << "\n== lab " << lab.lab << " (" << lab.variant << ") ==\n";
         if (!lab.error.empty()) {
-            os << "could not run the tests: " << lab.error << "\nscore: 0 / ?\n";
+            os << "could not run the tests: " << lab.error << "\nno score: the tests did not run\n";
             continue;
         }
         std::string suite;
@@ -113,14 +131,28 @@ void print_console(std::ostream& os, const std::vector<LabReport>& labs, HiddenP
                 os << "\n  " << (suite.empty() ? "(no task)" : suite) << "\n";
             }
             const bool withhold = r.info.hidden && hidden == HiddenPolicy::name_points;
-            std::string status = std::string(to_string(r.status));
+            const std::string status = to_string(r.status);
             os << "  " << paint(r.status, (r.status == Status::passed ? "PASS " : "FAIL ")) << std::setw(5)
                << (fmt_points(r.score) + "/" + fmt_points(r.info.points)) << "  " << r.info.name
                << (r.info.hidden ? "  [hidden]" : "") << "\n";
             if (r.status != Status::passed && !withhold) {
-                os << "        " << status << ": " << first_message(r) << "\n";
-                if (!r.info.hint.empty()) os << "        hint: " << r.info.hint << "\n";
-                for (const auto& f : r.figures) os << "        figure: " << f << "\n";
+                // The status word once: a message that starts with it ("not implemented: f", "crashed with")
+                // is not prefixed again.
+                const std::string m = r.messages.empty() ? std::string() : r.messages.front();
+                const bool says_status = m.rfind(status, 0) == 0;
+                if (m.empty()) os << indent << status << "\n";
+                else print_message(m, says_status ? "" : status + ": ");
+                const std::size_t shown = verbose ? r.messages.size() : 1;
+                for (std::size_t k = 1; k < shown; ++k) print_message(r.messages[k], "");
+                if (!verbose && r.messages.size() > 1)
+                    os << indent << "(" << r.messages.size() - 1 << " more message" << (r.messages.size() > 2 ? "s" : "")
+                       << ": --verbose)\n";
+                if (!r.info.hint.empty()) os << indent << "hint: " << r.info.hint << "\n";
+                for (const auto& f : r.figures) os << indent << "figure: " << f << "\n";
+                if (verbose && !r.output.empty()) {
+                    os << indent << "--- what the test printed ---\n";
+                    print_message(r.output.size() > 20000 ? r.output.substr(0, 20000) + "\n...(cut)" : r.output, "");
+                }
             }
         }
         // Totals per task: partial credit is visible at a glance.

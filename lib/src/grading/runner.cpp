@@ -729,6 +729,56 @@ std::string signal_name(int sig) {
 
 std::string tail(const std::string& s, std::size_t n) { return s.size() > n ? "..." + s.substr(s.size() - n) : s; }
 
+// A test's time limit, e.g. "20 s".
+std::string seconds_text(const TestInfo& t, const RunOptions& opt) {
+    std::ostringstream os;
+    os << (t.timeout_s > 0 ? t.timeout_s : opt.timeout_s) << " s";
+    return os.str();
+}
+
+// What an allocation that failed means under the grader's address-space cap.
+std::string memory_message(const RunOptions& opt) {
+    const std::string limit = opt.memory_mb ? "memory limit (" + std::to_string(opt.memory_mb) + " MiB) exceeded"
+                                            : std::string("out of memory");
+    return limit + " (std::bad_alloc)";
+}
+const char* memory_cause = ": a loop that never ends while it collects (an endless walk), or a far too large allocation?";
+
+// The test's own report of a crash (test_main.cpp prints it when no judge watches): "input: ..." and "last check
+// passed: ..." lines after "geolab: crashed with". Text only; the status comes from the signal the grader saw.
+std::string crash_note(const std::string& output) {
+    const auto pos = output.find("geolab: crashed with");
+    if (pos == std::string::npos) return "";
+    const auto body = output.find('\n', pos);
+    if (body == std::string::npos) return "";
+    std::string note = output.substr(body + 1, 2000);
+    while (!note.empty() && note.back() == '\n') note.pop_back();
+    return note.empty() ? "" : "\n" + note;
+}
+
+// The non-empty lines of `text`, joined by newlines.
+std::string lines_of(const std::string& text) {
+    std::string out;
+    for (std::size_t a = 0, b; a < text.size(); a = b + 1) {
+        b = text.find('\n', a);
+        if (b == std::string::npos) b = text.size();
+        if (b > a) out += (out.empty() ? "" : "\n") + text.substr(a, b - a);
+    }
+    return out;
+}
+
+// Replace the first message that reports a std::bad_alloc by what it means here; its contexts become "input:".
+void name_memory_limit(TestResult& r, const RunOptions& opt, const std::string& where, const std::string& extra = "") {
+    for (auto& m : r.messages)
+        if (m.find("std::bad_alloc") != std::string::npos) {
+            const auto nl = m.find('\n');
+            const std::string input = nl == std::string::npos ? "" : lines_of(m.substr(nl + 1));
+            m = memory_message(opt) + where + memory_cause + (input.empty() ? "" : "\ninput: " + input) + extra;
+            return;
+        }
+    r.messages.insert(r.messages.begin(), memory_message(opt) + where + memory_cause + extra);
+}
+
 // Decide the status of a finished child from what the parent saw.
 void classify(const ChildOutcome& c, const std::string& token, TestResult& r, const RunOptions& opt) {
     r.seconds = c.seconds;
@@ -737,14 +787,16 @@ void classify(const ChildOutcome& c, const std::string& token, TestResult& r, co
         r.status = s;
         r.messages.push_back(std::move(why));
     };
-    if (c.timed_out) return fail(Status::timeout, "killed after the time limit: an infinite loop, or far too slow?");
+    if (c.timed_out) return fail(Status::timeout, "killed after the time limit (" + seconds_text(r.info, opt) +
+                                                     "): an endless loop (a walk that never gets back to its start?), or far too slow?");
     if (c.flooded)
         return fail(Status::error, "killed: printed more than " + std::to_string(opt.output_cap) + " bytes");
     if (c.signal) {
         std::string m = "crashed with " + signal_name(c.signal);
         if (c.signal == SIGXCPU) m += ": CPU time limit";
         if (c.signal == SIGXFSZ) m += ": wrote a file larger than the limit";
-        return fail(Status::crashed, m);
+        if (c.signal == SIGABRT && c.output.find("std::bad_alloc") != std::string::npos) m += ": " + memory_message(opt);
+        return fail(Status::crashed, m + crash_note(c.output));
     }
     // The verdict: exactly one line "<token> <json>".
     const std::string prefix = token + " ";
@@ -754,7 +806,7 @@ void classify(const ChildOutcome& c, const std::string& token, TestResult& r, co
                         ") before the test finished: does the code call exit(), or abort?";
         if (c.exit_code == 127 && c.output.find("cannot execute") != std::string::npos)
             m = "the test program could not be started";
-        if (c.output.find("std::bad_alloc") != std::string::npos) m += " (ran out of memory)";
+        if (c.output.find("std::bad_alloc") != std::string::npos) m += " (" + memory_message(opt) + ")";
         return fail(Status::error, m);
     }
     nlohmann::json j = nlohmann::json::parse(c.verdict.substr(pos + prefix.size()), nullptr, false);
@@ -774,6 +826,8 @@ void classify(const ChildOutcome& c, const std::string& token, TestResult& r, co
         r.score = r.info.points;
     } else {
         r.status = j.value("not_implemented", false) ? Status::not_implemented : Status::failed;
+        if (j.value("out_of_memory", false) && r.status == Status::failed && opt.judge.empty())
+            name_memory_limit(r, opt, "");
         if (r.messages.empty()) r.messages.push_back("failed");
     }
 }
@@ -899,11 +953,15 @@ TestResult run_replayed(const std::filesystem::path& program, const TestInfo& te
     r.output = perf.output;  // what the student's program printed
     r.seconds = perf.seconds;
     // Where the judge stopped, to name the call the student's program was in.
-    std::string stopped, where;
+    std::string stopped, where, input, last_check;
+    bool out_of_memory = false;
     if (auto pos = judge.verdict.find(token + " "); pos != std::string::npos) {
         auto j = nlohmann::json::parse(judge.verdict.substr(pos + token.size() + 1), nullptr, false);
         if (!j.is_discarded() && j.is_object()) {
             stopped = j.value("stopped", "");
+            input = j.value("input", "");
+            last_check = j.value("last_check", "");
+            out_of_memory = j.value("out_of_memory", false);
             const auto calls = j.value("calls", 0u);
             const std::string fn = j.value("last_function", "");
             where = calls == 0 ? std::string(" before its first call into your code")
@@ -911,13 +969,24 @@ TestResult run_replayed(const std::filesystem::path& program, const TestInfo& te
             if (!test.suite.empty()) where += ", in '" + test.suite + "'";
         }
     }
+    // The performer stopped (crash, time limit, exit): one message replaces the judge's "your program stopped":
+    // what happened, where, the input the test was on (its INFO contexts: the fixture) and the last check passed.
+    const std::string context = lines_of(input);  // the contexts, one per line
+    const std::string found = (context.empty() ? "" : "\ninput: " + context) + (last_check.empty() ? "" : "\n" + last_check);
     auto override_with = [&](Status s, const std::string& why) {
         r.status = s;
         r.score = 0;
-        r.messages.insert(r.messages.begin(), why);
+        if (stopped == "eof" && !r.messages.empty() && r.messages.back().rfind("your program stopped", 0) == 0) {
+            r.messages.pop_back();  // the judge's note at the stop: said better below
+            r.messages.insert(r.messages.begin(), why + found);
+        } else {
+            r.messages.insert(r.messages.begin(), why);
+        }
     };
+    if (out_of_memory && r.status == Status::failed && !perf.timed_out && !perf.signal) name_memory_limit(r, opt, where, last_check.empty() ? "" : "\n" + last_check);
     if (perf.timed_out)
-        override_with(Status::timeout, "killed after the time limit" + where + ": an infinite loop, or far too slow?");
+        override_with(Status::timeout, "killed after the time limit (" + seconds_text(test, opt) + ")" + where +
+                                            ": an endless loop (a walk that never gets back to its start?), or far too slow?");
     else if (perf.flooded)
         override_with(Status::error, "killed: printed more than " + std::to_string(opt.output_cap) + " bytes");
     else if (perf.signal && stopped == "eof") {
@@ -1001,6 +1070,22 @@ LabReport grade_program(const std::string& lab, const std::string& variant, cons
     } catch (const std::exception& e) {
         report.error = e.what();
         return report;
+    }
+    if (!opt.only_test.empty()) {
+        std::vector<TestInfo> picked;
+        for (const auto& t : tests)
+            if (t.name == opt.only_test) picked = {t};
+        if (picked.empty())
+            for (const auto& t : tests)
+                if (t.name.find(opt.only_test) != std::string::npos) picked.push_back(t);
+        if (picked.size() != 1) {
+            report.error = (picked.empty() ? "no test of " + lab + " is named '" + opt.only_test + "'; its tests:"
+                                           : "'" + opt.only_test + "' names " + std::to_string(picked.size()) +
+                                                 " tests of " + lab + "; say which:");
+            for (const auto& t : picked.empty() ? tests : picked) report.error += "\n  " + t.name;
+            return report;
+        }
+        tests = picked;
     }
     report.results.resize(tests.size());
     std::atomic<std::size_t> next{0}, done{0};

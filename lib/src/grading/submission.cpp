@@ -588,6 +588,9 @@ const char* to_string(SubmissionStatus s) {
         case SubmissionStatus::ok: return "ok";
         case SubmissionStatus::compile_error: return "compile error";
         case SubmissionStatus::grader_error: return "grader error";
+        case SubmissionStatus::empty: return "empty submission";
+        case SubmissionStatus::unreadable: return "unreadable submission";
+        case SubmissionStatus::not_found: return "not found";
     }
     return "?";
 }
@@ -620,7 +623,13 @@ std::vector<ForbiddenCall> read_forbidden_list(const fs::path& file) {
 
 std::string SubmissionReport::summary() const {
     std::ostringstream os;
-    os << "status: " << to_string(status) << "\n";
+    // One status line: the word, and for a submission that could not be graded, why (and what to do).
+    os << "status: " << to_string(status);
+    if (!error.empty()) os << ": " << error;
+    if (status == SubmissionStatus::grader_error)
+        os << "\nthis is a problem of the grader, not of the submission: grade it again (the same command); if it "
+              "fails again, tell the instructor this message";
+    os << "\n";
     if (!isolation.empty()) {
         if (isolation.rfind("NOT ISOLATED", 0) == 0)
             os << "!!!!!!!! " << isolation << "\n!!!!!!!! the student's code ran with the grader's rights and could see "
@@ -629,7 +638,6 @@ std::string SubmissionReport::summary() const {
             os << "sandbox: " << isolation << "\n";
     }
     if (capped) os << "the wall-clock cap of the whole submission was reached: what had not finished scores 0\n";
-    if (!error.empty()) os << "grader error: " << error << "\n";
     if (!used.empty()) {
         os << "files graded:";
         for (const auto& u : used) os << " " << u;
@@ -709,7 +717,24 @@ SubmissionReport grade_submission(const fs::path& submission, const SubmissionOp
         make_dir(work / "bin", 0711);
         make_dir(work / "tmp", 0711);
 
+        // A submission that cannot be graded scores 0 on every test, listed (from the course's own program) so
+        // that max_score is right; `why` is the one status line.
+        auto score_zero = [&](SubmissionStatus status, const std::string& why) -> SubmissionReport& {
+            rep.status = status;
+            rep.error = why;
+            for (const auto& t : list_tests(fs::exists(judge) ? judge : course_program, opt.run)) {
+                TestResult r;
+                r.info = t;
+                r.status = Status::failed;
+                r.messages.push_back(std::string(to_string(status)) + ": no test ran");
+                rep.lab.results.push_back(std::move(r));
+            }
+            return finish();
+        };
+
         // 1. The submission: a folder, or a zip unpacked into a fresh folder.
+        if (!fs::exists(submission))
+            return score_zero(SubmissionStatus::not_found, submission.string() + ": no such folder or zip file");
         fs::path sub_dir = submission;
         if (fs::is_regular_file(submission)) {
             sub_dir = work / "unpacked";
@@ -718,14 +743,34 @@ SubmissionReport grade_submission(const fs::path& submission, const SubmissionOp
             const std::string unzip = find_program("unzip");
             if (unzip.empty()) throw std::runtime_error("unzip not found (apt-get install unzip)");
             CommandResult u = run_plain({unzip, "-qq", "-o", fs::absolute(submission).string(), "-d", sub_dir.string()}, 120);
-            if (u.exit_code != 0 && u.exit_code != 1)  // 1: warnings (e.g. skipped ../ entries)
-                throw std::runtime_error(submission.string() + ": cannot unzip: " + clip(u.output, 1000));
+            if (u.exit_code != 0 && u.exit_code != 1) {  // 1: warnings (e.g. skipped ../ entries)
+                // unzip's message on one line, without its "[file]" line: the status is one line.
+                std::string why, line;
+                std::istringstream lines(u.output);
+                while (std::getline(lines, line)) {
+                    if (line.empty() || line[0] == '[') continue;
+                    for (std::istringstream words(line); words >> line;) why += (why.empty() ? "" : " ") + line;
+                }
+                if (const auto dot = why.find(". "); dot != std::string::npos) why.resize(dot);  // its first sentence
+                if (why.size() > 200) why.resize(200);
+                return score_zero(SubmissionStatus::unreadable,
+                                  submission.string() + " is not a zip file that can be unpacked (unzip: " + why +
+                                      "): make the zip again and resubmit");
+            }
         } else if (!fs::is_directory(submission)) {
-            throw std::runtime_error(submission.string() + ": no such folder or zip file");
+            return score_zero(SubmissionStatus::unreadable, submission.string() + " is neither a folder nor a zip file");
         }
         const auto given = given_files(root / "labs" / opt.lab);
         Picked picked = pick_files(sub_dir, files, given);
         rep.ignored = picked.ignored;
+        if (picked.used.empty()) {
+            std::string names;
+            for (const auto& [name, stub] : files)
+                if (!given.count(name)) names += (names.empty() ? "" : ", ") + name;
+            return score_zero(SubmissionStatus::empty, "none of the lab's files (" + names + ") is in " +
+                                                           submission.filename().string() +
+                                                           ": submit your labs/" + opt.lab + "/src/*.cpp");
+        }
 
         // 2. The lab's sources: submitted files, stubs for the rest, the course's copy of given files.
         fs::remove_all(work / "src");

@@ -54,9 +54,27 @@ std::string short_path(const char* file) {
     return f;
 }
 
+// The last check that passed, kept as pointers into the program's static strings (no formatting per check):
+// a crash report and a stopped replay name it.
+struct LastCheck {
+    const char* file = nullptr;
+    int line = 0;
+    const char* macro = nullptr;
+    const char* expr = nullptr;
+};
+LastCheck g_last_check;
+bool g_out_of_memory = false;  // a std::bad_alloc reached the test (an allocation failed: the memory cap)
+bool g_not_implemented_failure = false;  // a failure of this test came from a geolab::NotImplemented
+
 std::string clip(std::string s, std::size_t n = 2000) {
     if (s.size() > n) s = s.substr(0, n) + " ...(cut)";
     return s;
+}
+
+std::string last_check_text() {
+    if (!g_last_check.file) return "last check passed: none (no check of this test had passed yet)";
+    return "last check passed: " + short_path(g_last_check.file) + ":" + std::to_string(g_last_check.line) + ": " +
+           g_last_check.macro + "( " + g_last_check.expr + " )";
 }
 
 // Characters that doctest's --test-case filter would interpret.
@@ -97,8 +115,8 @@ struct VerdictListener : doctest::IReporter {
         g_verdict = this;
         // The judge: a recording that cannot answer a call ends the test as a failure, with what is known so far.
         geolab::boundary::channel().stop = [this](const std::string& kind, const std::string& message) {
-            note(message + "\n" + contexts());
-            send("failed", false, kind);
+            note(message + "\n" + contexts() + last_check_text());
+            send("failed", false, kind, contexts());
             std::cout.flush();
             ::_exit(0);
         };
@@ -127,6 +145,7 @@ struct VerdictListener : doctest::IReporter {
     void test_case_start(const doctest::TestCaseData& tc) override {
         ran.push_back(tc.m_name);
         geolab::detail::current_test() = tc.m_name;
+        g_last_check = {};
     }
     void test_case_reenter(const doctest::TestCaseData&) override {}
     void test_case_end(const doctest::CurrentTestCaseStats& st) override {
@@ -138,13 +157,35 @@ struct VerdictListener : doctest::IReporter {
     }
     void test_case_exception(const doctest::TestCaseException& e) override {
         exception = true;
-        note(std::string("unexpected exception: ") + e.error_string.c_str() + "\n" + contexts());
+        const std::string what = e.error_string.c_str();
+        // A stub's own message says what happened ("not implemented: f (...)"): no second prefix before it.
+        const bool stub = what.rfind("not implemented: ", 0) == 0 && geolab::NotImplemented::count() > 0;
+        if (stub && messages.empty()) g_not_implemented_failure = true;
+        // The INFO/CAPTURE scopes the exception unwound (innermost first): the input the test was on.
+        std::string unwound;
+        const int n = doctest::IReporter::get_num_stringified_contexts();
+        const doctest::String* c = doctest::IReporter::get_stringified_contexts();
+        for (int i = n; i > 0; --i) unwound += std::string(c[i - 1].c_str()) + "\n";
+        note((stub ? what : "unexpected exception: " + what) + "\n" + contexts() + unwound);
     }
     void subcase_start(const doctest::SubcaseSignature&) override {}
     void subcase_end() override {}
     void log_assert(const doctest::AssertData& a) override {
-        if (!a.m_failed) return;
+        if (!a.m_failed) {
+            g_last_check = {a.m_file, a.m_line, doctest::assertString(a.m_at), a.m_expr};
+            return;
+        }
+        std::string thrown = a.m_exception.c_str();  // doctest quotes it
+        if (thrown.size() >= 2 && thrown.front() == '"' && thrown.back() == '"') thrown = thrown.substr(1, thrown.size() - 2);
+        const bool stub = a.m_threw && thrown.rfind("not implemented: ", 0) == 0 && geolab::NotImplemented::count() > 0;
+        if (messages.empty() && stub) g_not_implemented_failure = true;
         std::ostringstream os;
+        if (stub) {  // the stub's own words first, once; then where the test met it
+            os << thrown << "\nin " << short_path(a.m_file) << ":" << a.m_line << ": " << doctest::assertString(a.m_at)
+               << "( " << a.m_expr << " )\n" << contexts();
+            note(os.str());
+            return;
+        }
         os << short_path(a.m_file) << ":" << a.m_line << ": " << doctest::assertString(a.m_at) << "( " << a.m_expr
            << " )";
         // by the kind of assertion (m_exception_type is "" for plain CHECKs, not null: it tells nothing)
@@ -168,11 +209,12 @@ struct VerdictListener : doctest::IReporter {
     void test_case_skipped(const doctest::TestCaseData&) override {}
 
     void test_run_end(const doctest::TestRunStats&) override {
-        send((success && !exception && ran.size() == 1) ? "passed" : "failed", geolab::NotImplemented::count() > 0, "");
+        send((success && !exception && ran.size() == 1) ? "passed" : "failed", g_not_implemented_failure, "", "");
     }
 
-    // The verdict line to the grader's pipe. `stopped`: why a replay ended the test early (empty: it did not).
-    void send(const char* status, bool not_implemented, const std::string& stopped) {
+    // The verdict line to the grader's pipe. `stopped`: why a replay ended the test early (empty: it did not);
+    // `input`: the test's INFO/CAPTURE contexts where it stopped (the fixture it was on).
+    void send(const char* status, bool not_implemented, const std::string& stopped, const std::string& input) {
         if (g_result_fd < 0) return;
         const geolab::boundary::Channel& ch = geolab::boundary::channel();
         json j{{"ran", ran},
@@ -184,7 +226,10 @@ struct VerdictListener : doctest::IReporter {
                {"figures", geolab::detail::attached_figures()},
                {"calls", ch.calls},
                {"last_function", ch.last_function},
-               {"stopped", stopped}};
+               {"stopped", stopped},
+               {"input", clip(input)},
+               {"last_check", last_check_text()},
+               {"out_of_memory", g_out_of_memory}};
         std::string line = g_token + " " + j.dump() + "\n";
         const char* p = line.data();
         std::size_t left = line.size();
@@ -199,7 +244,75 @@ struct VerdictListener : doctest::IReporter {
     }
 };
 
+// ---- a crash, when no judge watches (a test program run by hand, or a lab without a judge) ----------------------
+// The handler prints what a student needs to find the bug: the test, the input it was on (its INFO/CAPTURE
+// contexts: the fixture) and the last check that passed; then the signal takes its default course (the grader
+// still sees the signal). Formatting the contexts allocates: if the crash left the heap locked, an alarm ends
+// the wait and the signal is raised all the same.
+volatile std::sig_atomic_t g_crash_signal = 0;
+
+void write_str(const char* s) {
+    if (!s) return;
+    std::size_t n = std::strlen(s);
+    while (n > 0) {
+        const ssize_t w = ::write(2, s, n);
+        if (w <= 0) return;
+        s += w;
+        n -= static_cast<std::size_t>(w);
+    }
+}
+
+[[noreturn]] void die_with(int sig) {
+    std::signal(sig, SIG_DFL);
+    sigset_t set;
+    sigemptyset(&set);
+    sigaddset(&set, sig);
+    ::sigprocmask(SIG_UNBLOCK, &set, nullptr);
+    ::raise(sig);
+    ::_exit(128 + sig);
+}
+
+void on_alarm(int) { die_with(g_crash_signal ? g_crash_signal : SIGABRT); }
+
+void on_crash(int sig) {
+    if (g_crash_signal) die_with(sig);  // a second fault while reporting the first
+    g_crash_signal = sig;
+    const char* abbrev = ::sigabbrev_np(sig);
+    write_str("\ngeolab: crashed with SIG");
+    write_str(abbrev ? abbrev : "?");
+    write_str(" (");
+    write_str(::strsignal(sig));
+    write_str(") in test '");
+    write_str(geolab::detail::current_test().c_str());
+    write_str("'\n");
+    std::signal(SIGALRM, on_alarm);
+    ::alarm(2);
+    const std::string input = VerdictListener::contexts();
+    if (!input.empty()) write_str(("input: " + input).c_str());
+    write_str((last_check_text() + "\n").c_str());
+    die_with(sig);
+}
+
+void install_crash_report() {
+    static char stack[64 * 1024];  // a stack overflow (endless recursion) must still be reported
+    stack_t ss{};
+    ss.ss_sp = stack;
+    ss.ss_size = sizeof stack;
+    ::sigaltstack(&ss, nullptr);
+    struct sigaction sa {};
+    sa.sa_handler = on_crash;
+    sa.sa_flags = SA_ONSTACK;
+    sigemptyset(&sa.sa_mask);
+    for (int sig : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) ::sigaction(sig, &sa, nullptr);
+}
+
 }  // namespace
+
+// An allocation that failed: under the grader's RLIMIT_AS that is the memory cap; the grader names it.
+DOCTEST_REGISTER_EXCEPTION_TRANSLATOR(const std::bad_alloc& e) {
+    g_out_of_memory = true;
+    return doctest::String(e.what());
+}
 
 DOCTEST_REGISTER_REPORTER("geolab-list", 1, ListReporter);
 DOCTEST_REGISTER_LISTENER("geolab-verdict", 1, VerdictListener);
@@ -230,6 +343,7 @@ int main(int argc, char** argv) {
             return context.run();
         }
         if (std::strcmp(argv[i], "--geolab-run") == 0 && i + 1 < argc) {
+            install_crash_report();
             const std::string filter = std::string("--test-case=") + argv[i + 1];
             const char* args[] = {argv[0], filter.c_str(), "--case-sensitive", "--no-breaks", "--no-version"};
             context.applyCommandLine(5, args);
@@ -270,6 +384,7 @@ int main(int argc, char** argv) {
         std::cout.flush();
         return 0;
     }
+    install_crash_report();
     context.applyCommandLine(argc, argv);
     return context.run();
 }

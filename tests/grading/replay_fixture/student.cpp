@@ -74,3 +74,9 @@ int inc(int x) { return x + 1; }
 int outer(int x) { return add(x, 0) + twice_inc(x); }
 std::size_t bad_index(int) { return 1000000000; }
 }  // namespace replay_fixture
+
+std::vector<int> replay_fixture::walk_forever(int x) {
+    std::vector<int> seen;
+    while (seen.size() < seen.max_size()) seen.push_back(x);  // never gets back to where it started
+    return seen;
+}

@@ -26,6 +26,16 @@ TEST_CASE("crashes in its second call" * geolab::points(1)) {
     CHECK(add(1, 1) == 2);
     CHECK(crash_in_call(1) == 1);
 }
+TEST_CASE("crashes on a named input" * geolab::points(1)) {
+    INFO("fixture 'pair'");
+    CHECK(add(1, 1) == 2);
+    CHECK(crash_in_call(1) == 1);
+}
+TEST_CASE("walks without end" * geolab::points(1)) {
+    INFO("fixture 'loop'");
+    CHECK(add(2, 2) == 4);
+    CHECK(walk_forever(3).size() == 3);
+}
 TEST_CASE("exits in a call" * geolab::points(1)) { CHECK(exit_in_call(1) == 1); }
 TEST_CASE("hangs in a call" * geolab::points(1) * geolab::time_limit(1)) { CHECK(hang_in_call(1) == 1); }
 TEST_CASE("forges bytes on the record pipe" * geolab::points(1)) { CHECK(forge_record(1) == 1); }

@@ -96,6 +96,18 @@ void write_out(wire::Writer& w, A& a) {
         if (a) wire::write(w, *a);
     }
 }
+//! An out-argument emptied (a default value), where its type allows: after the memory cap was hit, an endless
+//! walk's huge output is no answer and cannot be recorded; the recorded failure is the std::bad_alloc.
+template <class A>
+void clear_out(A& a) {
+    if constexpr (is_out_ref<A> || is_out_ptr<A>) {
+        using T = std::remove_cvref_t<std::remove_pointer_t<std::remove_reference_t<A>>>;
+        if constexpr (std::is_default_constructible_v<T> && std::is_move_assignable_v<T>) {
+            if constexpr (is_out_ref<A>) a = T{};
+            else if (a) *a = T{};
+        }
+    }
+}
 template <class A>
 void read_out(wire::Reader& r, A& a) {
     if constexpr (is_out_ref<A>) {
@@ -155,9 +167,25 @@ struct Thunk<Line, R(A...)> {
                 return std::move(*r);
             }
         } catch (...) {
-            w.u8(1);
-            write_current_exception(w);
-            (write_out<A>(w, a), ...);
+            const std::exception_ptr thrown = std::current_exception();
+            auto failure = [&] {
+                w = wire::Writer{};
+                w.u32(static_cast<std::uint32_t>(Line));
+                w.u32(n);
+                w.u8(1);
+                try {
+                    std::rethrow_exception(thrown);
+                } catch (...) {
+                    write_current_exception(w);
+                }
+                (write_out<A>(w, a), ...);
+            };
+            try {
+                failure();
+            } catch (const std::bad_alloc&) {  // the out-arguments are too large to record (the memory cap)
+                (clear_out<A>(a), ...);
+                failure();
+            }
             send(w);
             throw;
         }

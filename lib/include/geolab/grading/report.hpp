@@ -15,8 +15,10 @@ enum class HiddenPolicy {
     name_points,  //!< student's view before release: name, points and pass/fail only
 };
 
-//! The console table: test, points, status, the first failure message, the hint; then totals per task.
-void print_console(std::ostream& os, const std::vector<LabReport>& labs, HiddenPolicy hidden, bool color);
+//! The console table: test, points, status, the whole first failure message (the status word once), the hint;
+//! then totals per task. `verbose`: every message, uncut, and what the test printed.
+void print_console(std::ostream& os, const std::vector<LabReport>& labs, HiddenPolicy hidden, bool color,
+                   bool verbose = false);
 
 //! Gradescope's results.json (score, max_score, execution_time, output, tests[] with name, number, score,
 //! max_score, status, output, visibility, tags). Hidden tests get visibility "after_published".

@@ -99,6 +99,9 @@ struct RunOptions {
     //! replaying what the program (the performer) recorded. Empty: the program lists and judges itself, and the
     //! report says "verdict not isolated".
     std::filesystem::path judge;
+    //! Non-empty: run only this test (its exact name, or the one test whose name contains it); no test or
+    //! several matching is an error that lists the names.
+    std::string only_test;
 };
 
 //! What grading one test program produced.

@@ -35,8 +35,15 @@ struct SubmissionOptions {
     RunOptions run;                     //!< limits of the test runs (the sandbox is filled in by the grader)
 };
 
-//! How grading a submission went, as a whole.
-enum class SubmissionStatus { ok, compile_error, grader_error };
+//! How grading a submission went, as a whole. Every status but ok and grader_error scores 0 on every test.
+enum class SubmissionStatus {
+    ok,
+    compile_error,  //!< the student's files did not compile or link
+    grader_error,   //!< the grader failed (not the student): grade again
+    empty,          //!< none of the lab's files is in the submission
+    unreadable,     //!< a zip that cannot be unpacked, or neither a folder nor a zip
+    not_found,      //!< no such path
+};
 const char* to_string(SubmissionStatus s);
 
 //! A call to a function the lab forbids (labs/NN_x/forbidden.txt), found in a compiled student object.
@@ -61,7 +68,7 @@ struct SubmissionReport {
     std::vector<std::string> rejected;  //!< problems of the student's objects (symbols, sections, syscalls): score 0
     std::string isolation;  //!< "isolated (...)" or "NOT ISOLATED: reason"
     bool capped = false;    //!< the wall-clock cap was reached
-    std::string error;  //!< for grader_error: what went wrong
+    std::string error;  //!< for grader_error, empty, unreadable, not_found: what went wrong (the status line)
     double seconds = 0;
 
     //! What a student reads above the tests: status, files used and ignored, compiler messages, checks.

@@ -32,6 +32,7 @@ double slow(int ms);                           // sleeps ms milliseconds, return
 int inc(int x);                                // x + 1
 int outer(int x);                              // add(x, 0) + twice_inc(x): student -> student, student -> given -> student
 std::size_t bad_index(int x);                  // 1'000'000'000
+std::vector<int> walk_forever(int x);          // collects x without end (an endless walk): hits the memory cap
 
 // GIVEN: inc(inc(x)) (given code calls the student's inc).
 int twice_inc(int x);
@@ -58,6 +59,7 @@ GEOLAB_BOUNDARY(slow, double(int))
 GEOLAB_BOUNDARY(inc, int(int))
 GEOLAB_BOUNDARY(outer, int(int))
 GEOLAB_BOUNDARY(bad_index, std::size_t(int))
+GEOLAB_BOUNDARY(walk_forever, std::vector<int>(int))
 #endif
 
 }  // namespace replay_fixture
