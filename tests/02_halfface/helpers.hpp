@@ -15,6 +15,9 @@
 #include "geolab/errors.hpp"
 #include "geolab/grading/test.hpp"
 #include "geolab/halfface.hpp"
+#include "geolab/io.hpp"
+#include "geolab/models.hpp"
+#include "geolab/volume_io.hpp"
 #include "stored.hpp"
 
 namespace lab02 {
@@ -116,9 +119,15 @@ std::vector<Cell> radial_cells(const M& m, Edge e) {
     const Vertex b = m.edge_vertices(e)[1];
     // every alive half-edge of e directed b -> a with a cell
     std::vector<HalfEdge> cand;
-    for (HalfEdge h : m.halfedges())
-        if (!m.is_deleted(h) && m.edge(h) == e && m.from_vertex(h) == b && m.cell(m.halfface(h)).is_valid())
-            cand.push_back(h);
+    for (HalfFace hf : m.vertex_halffaces(b)) {  // the half-faces at b (the cache, or the walk around b)
+        const HalfEdge h0 = m.halfedge(hf);
+        HalfEdge h = h0;
+        do {
+            if (!m.is_deleted(h) && m.edge(h) == e && m.from_vertex(h) == b && m.cell(m.halfface(h)).is_valid())
+                cand.push_back(h);
+            h = m.next(h);
+        } while (h != h0);
+    }
     if (cand.empty()) return out;
     HalfEdge start = cand[0];
     for (HalfEdge h : cand)
@@ -196,6 +205,20 @@ inline SoupTopology soup_topology(const PolygonSoup& s) {
     t.V = used.size(), t.E = und.size(), t.F = s.n_faces();
     t.chi = long(t.V) - long(t.E) + long(t.F);
     return t;
+}
+
+// The tetrahedral mesh tools/fetch_models.sh made of model `name` with tetgen (data/models/NAME.1.node/.ele).
+inline CellList tet_model(const std::string& name) {
+    const std::filesystem::path base = geolab::models_dir() / (name + ".1");
+    if (!std::filesystem::exists(base.string() + ".ele"))
+        FAIL("tet mesh " << base.string() << ".ele not found: run tools/fetch_models.sh (needs the tetgen package)");
+    return cells_from(geolab::read_tetgen(base));
+}
+// The surface model `name` (data/models/NAME.off).
+inline PolygonSoup surface_model(const std::string& name) {
+    auto path = geolab::model_path(name);
+    if (!path) FAIL("model " << name << " not found in " << geolab::models_dir().string() << ": run tools/fetch_models.sh");
+    return geolab::read_mesh(*path);
 }
 
 }  // namespace lab02

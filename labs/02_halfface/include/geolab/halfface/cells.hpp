@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "geolab/boundary.hpp"
+#include "geolab/volume_io.hpp"
 
 namespace geolab::halfface {
 
@@ -75,5 +76,23 @@ struct CellList {
                               CellType::pyramid, label);
     }
 };
+
+//! The cell list of a volume mesh read from a file (geolab/volume_io.hpp): same vertices, cells and labels; each
+//! cell's faces by the add_* helpers (so a positive tetrahedron's faces are outward).
+inline CellList cells_from(const VolumeMesh& m) {
+    CellList c;
+    c.positions = m.positions;
+    for (std::size_t i = 0; i < m.n_cells(); ++i) {
+        const auto v = m.cell(i);
+        const std::int32_t label = m.labels[i];
+        switch (m.types[i]) {
+            case VolumeCell::tetrahedron: c.add_tet(v[0], v[1], v[2], v[3], label); break;
+            case VolumeCell::hexahedron: c.add_hex(std::span<const std::uint32_t, 8>(v.data(), 8), label); break;
+            case VolumeCell::prism: c.add_prism(std::span<const std::uint32_t, 6>(v.data(), 6), label); break;
+            case VolumeCell::pyramid: c.add_pyramid(std::span<const std::uint32_t, 5>(v.data(), 5), label); break;
+        }
+    }
+    return c;
+}
 
 }  // namespace geolab::halfface
