@@ -15,7 +15,8 @@ packages=(build-essential cmake ninja-build pkg-config git
           libglm-dev libglfw3-dev libosmesa6-dev libgl-dev doctest-dev libstb-dev nlohmann-json3-dev
           libcli11-dev libeigen3-dev libgmp-dev libbenchmark-dev libopenmesh-dev libopenvdb-dev libboost-dev libtbb-dev
           xvfb xauth zip unzip python3  # python3, xvfb: the demos test reads PNGs and opens a window
-          clang-tools)  # clang-query: the grader's source-level check of forbidden calls
+          clang-tools  # clang-query: the grader's source-level check of forbidden calls
+          tetgen)  # lab 02: tetrahedral meshes of the models (tools/fetch_models.sh)
 missing=()
 for p in "${packages[@]}"; do dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p"); done
 if [ ${#missing[@]} -gt 0 ]; then

@@ -1169,6 +1169,12 @@ std::uint64_t max_file_bytes_from_env(const std::string& file) {
 
 std::uint64_t default_max_file_bytes() { return max_file_bytes_from_env("GEOLAB_MAX_FILE_MB"); }
 
+std::string read_text_file(const std::filesystem::path& path, const ReadOptions& options) {
+    const std::uint64_t max_bytes =
+        options.max_file_bytes ? options.max_file_bytes : max_file_bytes_from_env(path.string());
+    return read_file(path, max_bytes);
+}
+
 PolygonSoup read_mesh(const std::filesystem::path& path, const ReadOptions& options) {
     MeshFormat format = format_from_extension(path);
     const std::uint64_t max_bytes =

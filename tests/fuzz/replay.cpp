@@ -1,4 +1,5 @@
-// replay FILE|DIR...: every corpus file through the reader for its extension (.obj .off .ply .stl; .soup files
+// replay FILE|DIR...: every corpus file through the reader for its extension (.obj .off .ply .stl; .mesh and
+// .node/.ele/.face volume meshes, read and checked only; .soup files
 // are build_mesh inputs, decoded as the build_mesh fuzz target does), then, when it reads, through build_mesh.
 // A clean rejection (IoError, TopologyError, check_soup's std::invalid_argument, NotImplemented from a stub) or
 // success is fine; any other exception fails the run. A crash or a hang fails it through ctest (TIMEOUT).
@@ -16,6 +17,7 @@
 
 #include "geolab/halfedge.hpp"
 #include "geolab/io.hpp"
+#include "geolab/volume_io.hpp"
 #include "soup_bytes.hpp"
 
 namespace {
@@ -29,6 +31,19 @@ std::string read_bytes(const fs::path& p) {
 
 // The outcome of one file: "read ..., built ..." or the clean rejection; throws on anything unexpected.
 std::string replay(const fs::path& p) {
+    // Volume meshes (lab 02's formats): read and checked; a TetGen mesh is read from its .node (with .ele, .face).
+    if (p.extension() == ".ele" || p.extension() == ".face") return "read with its .node";
+    if (p.extension() == ".mesh" || p.extension() == ".node") {
+        try {
+            const geolab::VolumeMesh m = p.extension() == ".mesh"
+                                             ? geolab::read_medit_from_string(read_bytes(p), p.filename().string())
+                                             : geolab::read_tetgen(p);
+            geolab::check_volume_mesh(m);
+            return "read " + std::to_string(m.n_vertices()) + " vertices, " + std::to_string(m.n_cells()) + " cells";
+        } catch (const geolab::IoError& e) {
+            return std::string("rejected: ") + e.what();
+        }
+    }
     const std::string bytes = read_bytes(p);
     geolab::PolygonSoup soup;
     std::string outcome;

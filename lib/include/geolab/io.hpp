@@ -48,6 +48,10 @@ struct ReadOptions {
 //! \throw IoError (file, line or element, reason).
 PolygonSoup read_mesh(const std::filesystem::path& path, const ReadOptions& options = {});
 
+//! The bytes of a regular file, with read_mesh's checks and size limit (for the other readers of lib, e.g. the
+//! volume mesh formats of volume_io.hpp). \throw IoError naming the file and the reason.
+std::string read_text_file(const std::filesystem::path& path, const ReadOptions& options = {});
+
 //! Parse mesh text already in memory; `name` is used in error messages only. Any failure, running out of
 //! memory included, is an IoError naming `name`.
 PolygonSoup read_mesh_from_string(const std::string& data, MeshFormat format, const std::string& name = "<memory>");
