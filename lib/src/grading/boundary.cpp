@@ -5,6 +5,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <csignal>
+#include <mutex>
 #include <new>
 #include <stdexcept>
 #include <typeinfo>
@@ -279,25 +280,37 @@ const ScalarField* field_at(std::uint32_t k) {
 }
 
 namespace {
-// Performer: one callback event into the current call's record.
+// Performer: one callback event into the current call's record. A student's code may sample the field from several
+// threads: each evaluates on its own and writes its whole event under a lock (the judge replays the events in the
+// order they were written, into its own field, each checked on its own).
 template <class Eval, class WriteArgs>
 auto record_event(std::uint8_t source, Method m, WriteArgs&& write_args, Eval&& eval) {
     CallContext* c = current_call();
     if (!c || !c->events) return eval();
-    wire::Writer& w = *c->events;
-    w.u8(event_tag);
-    w.u8(source);
-    w.u8(m);
-    write_args(w);
+    static std::mutex mutex;
+    auto put = [&](wire::Writer& w) {
+        w.u8(event_tag);
+        w.u8(source);
+        w.u8(m);
+        write_args(w);
+    };
     try {
         auto v = eval();
+        std::lock_guard<std::mutex> lock(mutex);
+        wire::Writer& w = *c->events;
+        put(w);
         w.u8(0);
         wire::write(w, v);
         flush_events(w);
         return v;
     } catch (...) {
-        w.u8(1);
-        flush_events(w);
+        {
+            std::lock_guard<std::mutex> lock(mutex);
+            wire::Writer& w = *c->events;
+            put(w);
+            w.u8(1);
+            flush_events(w);
+        }
         throw;
     }
 }
