@@ -353,7 +353,7 @@ TEST_CASE("record and replay: the judge lists the tests and decides each verdict
     const auto& rep = replay_report();
     REQUIRE(rep.error == "");
     CHECK(rep.isolated);
-    CHECK(rep.results.size() == 14);
+    CHECK(rep.results.size() == 17);
     CHECK(replayed("a timed call is timed by the judge").info.hidden);
     CHECK(replayed("hangs in a call").info.timeout_s == 1);
     const std::map<std::string, Status> expected = {
@@ -369,6 +369,9 @@ TEST_CASE("record and replay: the judge lists the tests and decides each verdict
         {"answers a timed call before it starts", Status::failed},
         {"calls among the student's functions are not recorded", Status::passed},
         {"an index out of range stops the judge", Status::failed},
+        {"member functions cross the boundary", Status::passed},
+        {"callbacks are replayed into the judge's own function", Status::passed},
+        {"changing the test's data shows as different arguments", Status::failed},
     };
     for (const auto& [name, status] : expected) {
         const auto& r = replayed(name);
@@ -389,6 +392,8 @@ TEST_CASE("record and replay: messages name the call the student's program was i
     CHECK(says(replayed("answers a timed call before it starts"), "before the grader let the call start"));
     CHECK(says(replayed("an index out of range stops the judge"), "the test stopped on your code's answers"));
     CHECK(says(replayed("not implemented"), "not implemented: not_written"));
+    CHECK(says(replayed("changing the test's data shows as different arguments"),
+               "does not match call 2 (poke): argument 1 differs"));
     CHECK(replayed("hangs in a call").seconds < 5);
 }
 

@@ -3,10 +3,13 @@
 #include "geolab/grading/boundary_calls.hpp"
 
 #include <cerrno>
+#include <cstdio>
 #include <csignal>
+#include <mutex>
 #include <new>
 #include <stdexcept>
 #include <typeinfo>
+#include <unordered_map>
 
 #include <poll.h>
 #include <unistd.h>
@@ -211,7 +214,7 @@ void record_end() {
     send(w);
 }
 
-std::uint8_t replay_begin(std::uint32_t line, const char* function, std::uint32_t n) {
+void replay_begin(std::uint32_t line, const char* function, std::uint32_t n) {
     Channel& ch = channel();
     wire::Reader& r = *ch.reader;
     const std::string where = "call " + std::to_string(n) + " (" + function + ")";
@@ -232,11 +235,219 @@ std::uint8_t replay_begin(std::uint32_t line, const char* function, std::uint32_
         if (got_line != line || got_n != n)
             stop("mismatch", "the recording does not match " + where + ": it holds call " + std::to_string(got_n) +
                                  " of the function on line " + std::to_string(got_line) + " of the lab header");
-        const std::uint8_t outcome = r.u8();
-        if (outcome > 1) throw wire::Error(wire::Error::malformed, "an outcome byte of " + std::to_string(outcome));
-        return outcome;
     } catch (const wire::Error& e) {
         stop(e.kind == wire::Error::truncated ? "eof" : "malformed", std::string(e.what()) + " (" + where + ")");
+    }
+}
+
+namespace {
+std::unordered_map<std::string, std::uint64_t>& memo() {
+    static std::unordered_map<std::string, std::uint64_t> m;
+    return m;
+}
+}  // namespace
+std::uint64_t* memo_digest(const std::string& key) {
+    auto it = memo().find(key);
+    return it == memo().end() ? nullptr : &it->second;
+}
+void memo_store(const std::string& key, std::uint64_t digest) {
+    if (memo().size() > 4096) memo().clear();
+    memo()[key] = digest;
+}
+
+void memo_clear() { memo().clear(); }
+
+CallContext*& current_call() {
+    static CallContext* c = nullptr;
+    return c;
+}
+
+std::uint32_t field_index(const ScalarField* f) {
+    if (!f) return 0;
+    if (const CallContext* c = current_call())
+        for (std::size_t k = 0; k < c->sources.size(); ++k)
+            if (!c->sources[k].is_function && (c->sources[k].field == f || c->sources[k].stand_in == f))
+                return static_cast<std::uint32_t>(k + 1);
+    return 0xffffffffu;
+}
+
+const ScalarField* field_at(std::uint32_t k) {
+    if (k == 0) return nullptr;
+    const CallContext* c = current_call();
+    if (!c || k > c->sources.size() || c->sources[k - 1].is_function || !c->sources[k - 1].field)
+        throw wire::Error(wire::Error::malformed, "a field pointer that is none of the fields the test passed");
+    return c->sources[k - 1].field;
+}
+
+namespace {
+// Performer: one callback event into the current call's record. A student's code may sample the field from several
+// threads: each evaluates on its own and writes its whole event under a lock (the judge replays the events in the
+// order they were written, into its own field, each checked on its own).
+template <class Eval, class WriteArgs>
+auto record_event(std::uint8_t source, Method m, WriteArgs&& write_args, Eval&& eval) {
+    CallContext* c = current_call();
+    if (!c || !c->events) return eval();
+    static std::mutex mutex;
+    auto put = [&](wire::Writer& w) {
+        w.u8(event_tag);
+        w.u8(source);
+        w.u8(m);
+        write_args(w);
+    };
+    try {
+        auto v = eval();
+        std::lock_guard<std::mutex> lock(mutex);
+        wire::Writer& w = *c->events;
+        put(w);
+        w.u8(0);
+        wire::write(w, v);
+        flush_events(w);
+        return v;
+    } catch (...) {
+        {
+            std::lock_guard<std::mutex> lock(mutex);
+            wire::Writer& w = *c->events;
+            put(w);
+            w.u8(1);
+            flush_events(w);
+        }
+        throw;
+    }
+}
+}  // namespace
+
+double RecordingField::value(const glm::dvec3& p) const {
+    return record_event(source_, m_value, [&](wire::Writer& w) { wire::write(w, p); }, [&] { return f_.value(p); });
+}
+glm::dvec3 RecordingField::gradient(const glm::dvec3& p) const {
+    return record_event(source_, m_gradient, [&](wire::Writer& w) { wire::write(w, p); },
+                        [&] { return f_.gradient(p); });
+}
+Box RecordingField::bounds() const {
+    auto b = record_event(source_, m_bounds, [](wire::Writer&) {}, [&] {
+        const Box x = f_.bounds();
+        return std::pair<glm::dvec3, glm::dvec3>(x.lo, x.hi);
+    });
+    return Box{b.first, b.second};
+}
+double RecordingField::lipschitz() const {
+    return record_event(source_, m_lipschitz, [](wire::Writer&) {}, [&] { return f_.lipschitz(); });
+}
+bool RecordingField::sign_may_jump() const {
+    return record_event(source_, m_sign_may_jump, [](wire::Writer&) {}, [&] { return f_.sign_may_jump(); });
+}
+double record_function_call(const std::function<double(double)>& f, std::uint8_t source, double t) {
+    return record_event(source, m_call, [&](wire::Writer& w) { wire::write(w, t); }, [&] { return f(t); });
+}
+
+void flush_events(wire::Writer& w) {
+    if (w.buffer().size() < (std::size_t(1) << 16)) return;
+    send(w);
+    w.buffer().clear();
+}
+
+void argument_mismatch(std::size_t index, bool member) {
+    const CallContext* c = current_call();
+    const std::string where = c ? "call " + std::to_string(c->call) + " (" + c->function + ")" : std::string("a call");
+    const std::string which = member && index == 0 ? std::string("the object it was called on")
+                                                   : "argument " + std::to_string(index);
+    stop("mismatch", "the recording does not match " + where + ": " + which +
+                         " differs from what the judge's test passes (your program's test data were changed, or "
+                         "the recording was not made by this test)");
+}
+
+namespace {
+bool same(double a, double b) { return a == b || (a != a && b != b); }
+bool same(const glm::dvec3& a, const glm::dvec3& b) { return same(a.x, b.x) && same(a.y, b.y) && same(a.z, b.z); }
+std::string show(double v) {
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.17g", v);
+    return buf;
+}
+std::string show(const glm::dvec3& v) { return "(" + show(v.x) + ", " + show(v.y) + ", " + show(v.z) + ")"; }
+}  // namespace
+
+std::uint8_t replay_events(wire::Reader& r) {
+    CallContext& c = *current_call();
+    const std::string where = "call " + std::to_string(c.call) + " (" + c.function + ")";
+    for (std::uint64_t event = 1;; ++event) {
+        const std::uint8_t tag = r.u8();
+        if (tag <= 1) return tag;
+        if (tag != event_tag) throw wire::Error(wire::Error::malformed, "an outcome byte of " + std::to_string(tag));
+        const std::uint8_t k = r.u8(), m = r.u8();
+        if (k >= c.sources.size()) throw wire::Error(wire::Error::malformed, "a callback to an unknown source");
+        const Source& s = c.sources[k];
+        if (s.is_function ? m != m_call : (m == m_call || m > m_call || !s.field))
+            throw wire::Error(wire::Error::malformed, "a callback of the wrong kind");
+        const std::string which = "callback " + std::to_string(event) + " of " + where;
+        auto differs = [&](const std::string& what) {
+            stop("mismatch", "the recording does not match " + which + ": " + what);
+        };
+        // run the test's own callback on the recorded arguments; the recorded result must be the same
+        auto check = [&](auto eval, auto describe) {
+            using V = decltype(eval());
+            std::optional<V> mine;
+            bool threw = false;
+            try {
+                mine = eval();
+            } catch (...) {
+                threw = true;
+            }
+            const std::uint8_t kind = r.u8();
+            if (kind > 1) throw wire::Error(wire::Error::malformed, "a callback outcome of " + std::to_string(kind));
+            if (kind == 1 || threw) {
+                if (kind == 1 && threw) return;
+                differs(describe() + (threw ? " threw here but returned in your program" : " returned here but threw in your program"));
+            }
+            V got{};
+            if constexpr (std::is_same_v<V, std::pair<glm::dvec3, glm::dvec3>>) {
+                wire::read(r, got);
+                if (!same(got.first, mine->first) || !same(got.second, mine->second))
+                    differs(describe() + ": your program saw other bounds");
+            } else {
+                wire::read(r, got);
+                bool eq;
+                if constexpr (std::is_same_v<V, bool>) eq = got == *mine;
+                else eq = same(got, *mine);
+                if (!eq) {
+                    if constexpr (std::is_same_v<V, bool>)
+                        differs(describe() + ": your program saw " + (got ? "true" : "false"));
+                    else
+                        differs(describe() + " is " + show(*mine) + ", your program saw " + show(got));
+                }
+            }
+        };
+        switch (m) {
+            case m_value: {
+                glm::dvec3 p;
+                wire::read(r, p);
+                check([&] { return s.field->value(p); }, [&] { return "the field's value at " + show(p); });
+                break;
+            }
+            case m_gradient: {
+                glm::dvec3 p;
+                wire::read(r, p);
+                check([&] { return s.field->gradient(p); }, [&] { return "the field's gradient at " + show(p); });
+                break;
+            }
+            case m_bounds:
+                check([&] {
+                    const Box b = s.field->bounds();
+                    return std::pair<glm::dvec3, glm::dvec3>(b.lo, b.hi);
+                }, [] { return std::string("the field's bounds()"); });
+                break;
+            case m_lipschitz:
+                check([&] { return s.field->lipschitz(); }, [] { return std::string("the field's lipschitz()"); });
+                break;
+            case m_sign_may_jump:
+                check([&] { return s.field->sign_may_jump(); }, [] { return std::string("the field's sign_may_jump()"); });
+                break;
+            default: {
+                double t;
+                wire::read(r, t);
+                check([&] { return s.function(t); }, [&] { return "the function's value at " + show(t); });
+            }
+        }
     }
 }
 

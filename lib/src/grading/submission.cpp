@@ -272,6 +272,43 @@ CourseSymbols course_symbols(const std::vector<std::string>& link_args, const fs
     return c;
 }
 
+// course_symbols, kept in the job cache (`dir`) under a key made of every input's path, size and time: the course
+// build and its shared libraries change rarely, and reading them (nm of each library) costs seconds a submission.
+CourseSymbols cached_course_symbols(const std::vector<std::string>& link_args, const fs::path& build,
+                                    const fs::path& course_program, const std::string& lab_archive,
+                                    const fs::path& dir) {
+    std::string key = "course symbols v1\n";
+    auto stamp_of = [&](const fs::path& p) {
+        std::error_code ec;
+        const auto size = fs::file_size(p, ec);
+        const auto time = fs::last_write_time(p, ec).time_since_epoch().count();
+        key += p.string() + " " + std::to_string(ec ? 0 : size) + " " + std::to_string(ec ? 0 : time) + "\n";
+    };
+    stamp_of(course_program);
+    stamp_of(build / lab_archive);
+    for (const auto& a : link_args)
+        if (!a.empty() && a[0] != '-') stamp_of(fs::path(a).is_relative() ? build / a : fs::path(a));
+    for (const char* lib : {"/usr/lib/x86_64-linux-gnu/libc.so.6", "/usr/lib/x86_64-linux-gnu/libstdc++.so.6"})
+        stamp_of(lib);  // a system upgrade
+    const fs::path file = dir / (hex_hash(key) + ".symbols");
+    CourseSymbols c;
+    std::set<std::string>* sets[] = {&c.tests, &c.others, &c.shared, &c.api};
+    if (fs::exists(file)) {
+        std::istringstream in(read_text(file));
+        for (std::string line; std::getline(in, line);)
+            if (line.size() > 2 && line[0] >= '0' && line[0] <= '3') sets[line[0] - '0']->insert(line.substr(2));
+        return c;
+    }
+    c = course_symbols(link_args, build, course_program, lab_archive);
+    std::string text;
+    for (int k = 0; k < 4; ++k)
+        for (const auto& n : *sets[k]) text += std::to_string(k) + " " + n + "\n";
+    const fs::path tmp = file.string() + ".tmp" + std::to_string(::getpid());
+    write_text(tmp, text, fs::perms(0600));
+    fs::rename(tmp, file);  // atomic: parallel jobs share the cache
+    return c;
+}
+
 // The problems of one student object: symbols defined outside the lab's API, early-running sections, raw
 // system-call instructions, uses of what only the tests define. Each a sentence a student can act on.
 std::vector<std::string> object_problems(const std::string& file, const fs::path& obj, const CourseSymbols& c) {
@@ -996,7 +1033,8 @@ SubmissionReport grade_submission(const fs::path& submission, const SubmissionOp
             }
         }
         const std::vector<std::string> link_args = link_command(build, opt.lab);
-        const CourseSymbols course = course_symbols(link_args, build, course_program, "liblab_" + opt.lab.substr(0, 2) + ".a");
+        const CourseSymbols course = cached_course_symbols(link_args, build, course_program,
+                                                           "liblab_" + opt.lab.substr(0, 2) + ".a", cache);
         for (const auto& [name, obj] : student_objects)
             for (auto& p : object_problems("labs/" + opt.lab + "/src/" + name, obj, course)) rep.rejected.push_back(p);
         checks.push_back(check_result("student code defines only the lab's API, runs nothing early, makes no raw system calls",

@@ -43,10 +43,11 @@ int forge_record(int x) {
     (void)!::write(record_fd(), junk, sizeof junk);
     return x;
 }
-std::vector<int> huge_count(int) {
+std::vector<int> huge_count(int x) {
     geolab::wire::Writer w;  // call 1 "returned" a vector of 2^60 ints
     w.u32(huge_count_line);
     w.u32(1);
+    w.u64(geolab::boundary::arg_digest<int>(x));  // the argument's digest, as the recorder writes it
     w.u8(0);
     w.u64(std::uint64_t{1} << 60);
     raw(w);
@@ -56,10 +57,13 @@ int answer_early(int x) {
     geolab::wire::Writer w;  // this call's answer (call 1), then the next call's (slow, call 2) before its "go"
     w.u32(answer_early_line);
     w.u32(1);
+    w.u64(geolab::boundary::arg_digest<int>(x));
     w.u8(0);
     w.u32(static_cast<std::uint32_t>(x));
+    int ms = 300;  // what the test passes to slow
     w.u32(slow_line);
     w.u32(2);
+    w.u64(geolab::boundary::arg_digest<int>(ms));
     w.u8(0);
     const double fast = 0.0;
     w.bytes(&fast, sizeof fast);
@@ -73,6 +77,18 @@ double slow(int ms) {
 int inc(int x) { return x + 1; }
 int outer(int x) { return add(x, 0) + twice_inc(x); }
 std::size_t bad_index(int) { return 1000000000; }
+void Acc::add(int x) { total += x; }
+int Acc::get() const { return total; }
+double sum_calls(Fn f, int n) {
+    double s = 0;
+    for (int i = 0; i < n; ++i) s += f(i);
+    return s;
+}
+int poke(const std::vector<int>& v) {
+    const int n = int(v.size());
+    const_cast<std::vector<int>&>(v).clear();
+    return n;
+}
 }  // namespace replay_fixture
 
 std::vector<int> replay_fixture::walk_forever(int x) {

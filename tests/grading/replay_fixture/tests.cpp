@@ -57,4 +57,25 @@ TEST_CASE("an index out of range stops the judge" * geolab::points(1)) {
     std::vector<int> v(3, 0);
     CHECK(v[bad_index(0)] == 0);  // operator[]: the judge is built with _GLIBCXX_ASSERTIONS
 }
+TEST_CASE("member functions cross the boundary" * geolab::points(1)) {
+    Acc a;
+    a.add(2);
+    a.add(3);
+    CHECK(a.total == 5);
+    CHECK(a.get() == 5);
+}
+TEST_CASE("callbacks are replayed into the judge's own function" * geolab::points(1)) {
+    int calls = 0;
+    auto g = [&](double t) {
+        ++calls;
+        return 2 * t;
+    };
+    CHECK(sum_calls(g, 4) == 12);
+    CHECK(calls == 4);  // the judge's count: it replays the student's 4 calls into its own g
+}
+TEST_CASE("changing the test's data shows as different arguments" * geolab::points(1)) {
+    const std::vector<int> v{1, 2, 3};
+    CHECK(poke(v) == 3);
+    CHECK(poke(v) == 3);  // the performer's v was cleared by the first call; the judge's was not
+}
 }

@@ -3,7 +3,10 @@
 //! The byte format of recorded calls (record and replay, docs/architecture.md): one codec per type, written
 //! once here. Arithmetic types and enums as their bytes, bool as one byte 0/1, std::string and std::vector as a
 //! 64-bit count then the elements, pair / tuple / array / optional / glm vectors and matrices element by
-//! element, and lab structs through their GEOLAB_FIELDS list (geolab/boundary.hpp).
+//! element, C arrays element by element, std::span (written only: input arguments), lab structs through their
+//! GEOLAB_FIELDS list (geolab/boundary.hpp), and lab types with their own `geolab_save(Writer&) const` /
+//! `geolab_load(Reader&)` members (e.g. a sparse grid that is not a list of fields). Contiguous arithmetic or glm
+//! elements of a vector or span are copied as one block.
 //!
 //! The Reader reads bytes that the student's process wrote: nothing it reads is trusted. Every read is bounded
 //! by the bytes the recording may still hold (a count of n elements needs at least n bytes left), a short read
@@ -12,6 +15,7 @@
 #include <cstdint>
 #include <cstring>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <tuple>
@@ -40,6 +44,9 @@ public:
     void u32(std::uint32_t v) { bytes(&v, 4); }
     void u64(std::uint64_t v) { bytes(&v, 8); }
     std::string& buffer() { return buf_; }
+    //! v through its codec (for lab types' geolab_save members, which cannot name wire::write).
+    template <class T>
+    void value(const T& v);
 
 private:
     std::string buf_;
@@ -81,6 +88,11 @@ public:
     bool ready();
     //! True at a clean end of file (nothing more will come).
     bool at_end();
+    //! v through its codec (for lab types' geolab_load members).
+    template <class T>
+    void value(T& v);
+    //! A malformed recording (for lab types' geolab_load members): throws Error{malformed}.
+    [[noreturn]] void fail(const std::string& what) { throw Error(Error::malformed, what); }
 
 private:
     bool fill();  // at least one byte into buf_; false at end of file
@@ -148,12 +160,20 @@ struct Codec<std::string> {
         r.bytes(s.data(), s.size());
     }
 };
+//! Elements copied as one block of bytes: arithmetic types but bool, and glm vectors of them (no padding).
+template <class T>
+constexpr bool is_blob = std::is_arithmetic_v<T> && !std::is_same_v<T, bool>;
+template <glm::length_t L, class T, glm::qualifier Q>
+constexpr bool is_blob<glm::vec<L, T, Q>> = is_blob<T> && sizeof(glm::vec<L, T, Q>) == L * sizeof(T);
+
 template <class T, class A>
 struct Codec<std::vector<T, A>> {
     static constexpr std::size_t min_bytes = 8;
     static void write(Writer& w, const std::vector<T, A>& v) {
         w.u64(v.size());
-        if constexpr (std::is_same_v<T, bool>) {
+        if constexpr (is_blob<T>) {
+            w.bytes(v.data(), v.size() * sizeof(T));
+        } else if constexpr (std::is_same_v<T, bool>) {
             for (bool b : v) w.u8(b ? 1 : 0);
         } else {
             for (const T& x : v) wire::write(w, x);
@@ -161,6 +181,11 @@ struct Codec<std::vector<T, A>> {
     }
     static void read(Reader& r, std::vector<T, A>& v) {
         const std::size_t n = r.count(min_size<T>());
+        if constexpr (is_blob<T>) {
+            v.resize(n);
+            r.bytes(v.data(), n * sizeof(T));
+            return;
+        }
         v.clear();
         v.reserve(n);  // bounded by the bytes left: a hostile count cannot reserve more than the recording holds
         for (std::size_t i = 0; i < n; ++i) {
@@ -240,6 +265,35 @@ struct Codec<glm::mat<C, R, T, Q>> {
         for (glm::length_t i = 0; i < C; ++i) wire::read(r, m[i]);
     }
 };
+template <class T, std::size_t N>
+struct Codec<T[N]> {
+    static constexpr std::size_t min_bytes = N * min_size<T>();
+    static void write(Writer& w, const T (&a)[N]) {
+        for (const T& x : a) wire::write(w, x);
+    }
+    static void read(Reader& r, T (&a)[N]) {
+        for (T& x : a) wire::read(r, x);
+    }
+};
+//! A span: written like a vector (input arguments only; nothing is read into a span).
+template <class T, std::size_t E>
+struct Codec<std::span<T, E>> {
+    static constexpr std::size_t min_bytes = 8;
+    static void write(Writer& w, const std::span<T, E>& v) {
+        w.u64(v.size());
+        if constexpr (is_blob<std::remove_cv_t<T>>) {
+            w.bytes(v.data(), v.size() * sizeof(T));
+        } else {
+            for (const auto& x : v) wire::write(w, x);
+        }
+    }
+};
+//! A lab type with its own encoding: geolab_save(Writer&) const and geolab_load(Reader&).
+template <class T>
+struct Codec<T, std::void_t<decltype(std::declval<const T&>().geolab_save(std::declval<Writer&>()))>> {
+    static void write(Writer& w, const T& v) { v.geolab_save(w); }
+    static void read(Reader& r, T& v) { v.geolab_load(r); }
+};
 //! A lab struct: its GEOLAB_FIELDS, in order.
 template <class T>
 struct Codec<T, std::void_t<decltype(std::declval<T&>().geolab_fields())>> {
@@ -250,5 +304,14 @@ struct Codec<T, std::void_t<decltype(std::declval<T&>().geolab_fields())>> {
         std::apply([&](auto&... x) { (wire::read(r, x), ...); }, v.geolab_fields());
     }
 };
+
+template <class T>
+void Writer::value(const T& v) {
+    wire::write(*this, v);
+}
+template <class T>
+void Reader::value(T& v) {
+    wire::read(*this, v);
+}
 
 }  // namespace geolab::wire

@@ -34,6 +34,29 @@ int outer(int x);                              // add(x, 0) + twice_inc(x): stud
 std::size_t bad_index(int x);                  // 1'000'000'000
 std::vector<int> walk_forever(int x);          // collects x without end (an endless walk): hits the memory cap
 
+// A member function and a const one (the object is compared before and, non-const, recorded after the call).
+struct Acc {
+    int total = 0;
+    GEOLAB_FIELDS(total)
+    void add(int x);       // total += x
+    int get() const;       // total
+};
+// A function reference like lab 09's FunctionRef: a callback the student's code calls.
+class Fn {
+public:
+    template <class F>
+    Fn(F& f)
+        : obj_(const_cast<void*>(static_cast<const void*>(&f))),
+          call_([](void* o, double t) { return double((*static_cast<F*>(o))(t)); }) {}
+    double operator()(double t) const { return call_(obj_, t); }
+
+private:
+    void* obj_;
+    double (*call_)(void*, double);
+};
+double sum_calls(Fn f, int n);                 // f(0) + ... + f(n - 1)
+int poke(const std::vector<int>& v);           // returns v.size(), but first clears the test's vector (const cast)
+
 // GIVEN: inc(inc(x)) (given code calls the student's inc).
 int twice_inc(int x);
 
@@ -60,6 +83,10 @@ GEOLAB_BOUNDARY(inc, int(int))
 GEOLAB_BOUNDARY(outer, int(int))
 GEOLAB_BOUNDARY(bad_index, std::size_t(int))
 GEOLAB_BOUNDARY(walk_forever, std::vector<int>(int))
+GEOLAB_BOUNDARY(Acc::add, void (Acc::*)(int))
+GEOLAB_BOUNDARY(Acc::get, int (Acc::*)() const)
+GEOLAB_BOUNDARY(sum_calls, double(Fn, int))
+GEOLAB_BOUNDARY(poke, int(const std::vector<int>&))
 #endif
 
 }  // namespace replay_fixture
