@@ -802,9 +802,20 @@ MutateReport run_mutate(const MutateOptions& opt) {
         if (seq_mode && !order.empty()) {
             const auto v = run_seq(prog, order, o, scratch / ("job" + std::to_string(job)));
             r.tests_run += static_cast<int>(v.size());
-            if (!v.empty() && !v.back().passed) from = v.size() - 1;  // a failure: confirmed alone below
-            else if (v.size() == order.size()) from = order.size();  // all passed: survived
-            else {                                                    // a crash, the time limit, the output cap
+            if (v.size() == 1 && !v.back().passed) {
+                // the first test of a fresh process: exactly as grading runs it, nothing to confirm
+                r.outcome = Outcome::killed;
+                r.detail = "'" + tests[order[0]].name + "' failed";
+                if (!v.back().message.empty()) r.detail += ": " + v.back().message.substr(0, 200);
+                std::lock_guard lock(out_mutex);
+                last_killer[m.file] = order[0];
+                ++kills[order[0]];
+                from = order.size();
+            } else if (!v.empty() && !v.back().passed) {
+                from = v.size() - 1;  // a failure after other tests: confirmed alone below
+            } else if (v.size() == order.size()) {
+                from = order.size();  // all passed: survived
+            } else {  // a crash, the time limit, the output cap
                 from = v.size();
                 at_own_limit = true;
             }
