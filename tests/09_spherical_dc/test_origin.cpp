@@ -220,6 +220,80 @@ TEST_CASE("correct_origin: where grad f vanishes the step goes to the best of th
     CHECK(checked == 12);
 }
 
+TEST_CASE("correct_origin: exactly on the surface where grad f vanishes: the side comes from the probe at delta times unit" *
+          geolab::points(1) *
+          geolab::hint("f(x0) = 0 and |grad f| < 1e-12: n = the axis probe at distance delta * unit with the largest f "
+                       "(as for s = 1), then s = +1 if |f(x0 + delta unit n)| > |f(x0 - delta unit n)| else -1. The probe "
+                       "distance decides which axis wins here. Handout §6.")) {
+    // f = max(x,0)^4 - 10 max(-x,0)^4 + 0.0025 max(y,0)^2: f(0) = 0, grad f(0) = 0. Probing at d < 0.05, +Y wins
+    // (and then s = +1); at d > 0.05, +X wins (and then s = -1: f falls faster along -x).
+    struct Flat final : ScalarField {
+        double value(const glm::dvec3& p) const override {
+            const double xp = std::max(p.x, 0.0), xm = std::max(-p.x, 0.0), y = std::max(p.y, 0.0);
+            return xp * xp * xp * xp - 10.0 * xm * xm * xm * xm + 0.0025 * y * y;
+        }
+        glm::dvec3 gradient(const glm::dvec3& p) const override {
+            const double xp = std::max(p.x, 0.0), xm = std::max(-p.x, 0.0), y = std::max(p.y, 0.0);
+            return {4.0 * xp * xp * xp + 40.0 * xm * xm * xm, 0.005 * y, 0.0};
+        }
+        Box bounds() const override { return {glm::dvec3(-1.0), glm::dvec3(1.0)}; }
+    } f;
+    auto best_probe = [&](const glm::dvec3& x, double s, double d) {
+        glm::dvec3 best(0.0);
+        double best_v = -1e300;
+        for (int a = 0; a < 3; ++a)
+            for (double e : {1.0, -1.0}) {
+                glm::dvec3 q(0.0);
+                q[a] = e;
+                if (s * f.value(x + s * d * q) > best_v) best_v = s * f.value(x + s * d * q), best = q;
+            }
+        return best;
+    };
+    for (double step : {0.03, 0.035, 0.07, 0.1}) {
+        OriginParams op;
+        op.unit = step / op.delta;
+        const glm::dvec3 x0(0.0);
+        const glm::dvec3 n = best_probe(x0, 1.0, step);
+        const double s = std::abs(f.value(x0 + step * n)) > std::abs(f.value(x0 - step * n)) ? 1.0 : -1.0;
+        const glm::dvec3 want = x0 + s * step * best_probe(x0, s, step);
+        const auto path = correct_origin(f, x0, op);
+        INFO("f = max(x,0)^4 - 10 max(-x,0)^4 + 0.0025 max(y,0)^2 from the origin, delta * unit = " << step
+             << ": the probe gives n = " << str(n) << ", side s = " << s << ", first step to " << str(want) << "; got "
+             << (path.size() > 1 ? str(path[1]) : std::string("no step")));
+        REQUIRE(path.size() >= 2);
+        CHECK(glm::length(path[1] - want) < 1e-12);
+    }
+}
+
+TEST_CASE("dual_contour_spherical: the default r_max from an off-centre origin covers every corner of bounds()" *
+          geolab::points(1) *
+          geolab::hint("r_max = 0 means 1.05 x the largest distance from the (corrected) origin to the 8 corners of "
+                       "bounds(): corner c takes hi.x when bit 0 of c is set, hi.y for bit 1, hi.z for bit 2. From an "
+                       "origin off the centre the farthest corner can be any of the 8. Handout §6.2.")) {
+    // a box with unequal half extents (bounds are not a cube) and origins in every octant of it
+    const glm::dvec3 centre(0.3, -0.2, 0.1), half(0.9, 0.6, 0.45);
+    const FieldPtr f = geolab::box(centre, half);
+    const Box b = f->bounds();
+    for (int oct = 0; oct < 8; ++oct) {
+        const glm::dvec3 off(oct & 1 ? 0.45 : -0.45, oct & 2 ? 0.3 : -0.3, oct & 4 ? 0.2 : -0.2);
+        SphericalParams p;
+        p.max_level = 3;
+        p.origin = centre + off;
+        DcStats st;
+        (void)dual_contour_spherical(*f, p, &st);
+        double far = 0;
+        int far_corner = -1;
+        for (int c = 0; c < 8; ++c) {
+            const glm::dvec3 q(c & 1 ? b.hi.x : b.lo.x, c & 2 ? b.hi.y : b.lo.y, c & 4 ? b.hi.z : b.lo.z);
+            if (glm::length(q - st.origin) > far) far = glm::length(q - st.origin), far_corner = c;
+        }
+        INFO("box about " << str(centre) << " half extents " << str(half) << ", origin " << str(st.origin)
+             << ": the farthest corner of bounds() is corner " << far_corner << " at " << far << ", expected r_max "
+             << 1.05 * far << ", got " << st.r_max);
+        CHECK(std::abs(st.r_max - 1.05 * far) <= 1e-12 * far);
+    }
+}
+
 TEST_CASE("correct_origin: unit <= 0 throws std::invalid_argument" * geolab::points(1) *
           geolab::hint("dual_contour_spherical fills unit in; a direct call must pass a positive length.")) {
     const FieldPtr f = geolab::sphere({0, 0, 0}, 1.0);

@@ -257,6 +257,51 @@ TEST_CASE("qef: near-planar and near-threshold data match an independent eigen-s
     CHECK(checked == 26);
 }
 
+TEST_CASE("qef: weighted planes (AtA and Atb and btb scaled by one w) give the same point and rank" * geolab::points(1) *
+          geolab::hint("Qef's fields may hold weighted planes (sum of w n n^T): scaling AtA, Atb and btb by one w > 0 "
+                       "does not move the minimiser, and the truncation (lambda < tau * lambda_max) is relative. Any "
+                       "threshold or shortcut in solve must compare eigenvalues with each other (or with the trace), "
+                       "never with an absolute number such as 1. Handout §1.")) {
+    int checked = 0;
+    // edges: two planes whose normals make an angle theta (eigenvalue ratio (1 - cos) / (1 + cos): 0.0130 at 13
+    // degrees, above tau = 0.01, so rank 2), a near-flat fan of 5 planes, and a corner
+    for (int shape = 0; shape < 6; ++shape) {
+        Planes pl;
+        const glm::dvec3 p0(1.5, -0.5, 2.0), axis = glm::normalize(glm::dvec3(0.2, 1.0, -0.4));
+        const glm::dvec3 n0 = glm::normalize(glm::cross(axis, glm::dvec3(1, 0, 0))), n1 = glm::cross(axis, n0);
+        const double theta_deg[] = {13.0, 14.0, 15.0, 40.0};
+        if (shape < 4) {
+            const double t = theta_deg[shape] * kPi / 180.0;
+            pl.add(p0 + 0.1 * axis, n0);
+            pl.add(p0 + 0.05 * n1 - 0.2 * axis, std::cos(t) * n0 + std::sin(t) * n1);
+        } else if (shape == 4) {
+            for (int i = 0; i < 5; ++i) pl.add(p0 + 0.03 * i * n1 + 0.02 * i * axis, n0 + 0.15 * (i - 2) * n1);
+        } else {
+            pl.add(p0 + glm::dvec3(0.1, 0, 0), {1, 0, 0});
+            pl.add(p0 + glm::dvec3(0, 0.1, 0), {0, 1, 0});
+            pl.add(p0 + glm::dvec3(0, 0, 0.1), {0.2, 0.1, 1});
+        }
+        const double tau = 0.01;
+        const Reference ref = eigen_reference(pl, tau);
+        REQUIRE(std::abs(ref.ratio_near_threshold - tau) > 1e-4);
+        for (double w : {1e-3, 0.2, 0.25, 0.4, 0.7, 3.0, 1e3}) {
+            Qef q = pl.qef();
+            for (double& e : q.ata) e *= w;
+            q.atb *= w;
+            q.btb *= w;
+            int rank = -1;
+            const glm::dvec3 x = q.solve(tau, nullptr, &rank);
+            INFO("shape " << shape << " (" << (shape < 4 ? "an edge of two planes" : shape == 4 ? "a fan of 5 planes" : "a corner")
+                          << "), weight " << w << ": solve gave " << str(x) << " rank " << rank
+                          << "; the unweighted truncated pseudo-inverse (Eigen) gives " << str(ref.x) << " rank " << ref.rank);
+            CHECK(rank == ref.rank);
+            CHECK(glm::length(x - ref.x) <= 1e-9);
+            ++checked;
+        }
+    }
+    CHECK(checked == 42);
+}
+
 TEST_CASE("qef: error(x) equals the brute-force sum of squares; accumulated in double" * geolab::points(1) *
           geolab::hint("Q(x) = xT AtA x - 2 xT Atb + btb with every sum in double (float loses everything here: "
                        "the points are near 1e4 while Q is of order 1). Handout §2.1.")) {

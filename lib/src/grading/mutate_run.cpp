@@ -2,7 +2,10 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cctype>
 #include <cmath>
+#include <cstdint>
+#include <cstdlib>
 #include <cstdio>
 #include <deque>
 #include <fstream>
@@ -225,6 +228,7 @@ nlohmann::json result_json(const MutantResult& r) {
             {"line", r.mutant.line},       {"col", r.mutant.col},         {"kind", r.mutant.kind},
             {"original", r.mutant.original}, {"mutated", r.mutant.mutated}, {"outcome", to_string(r.outcome)},
             {"mode", r.mode},              {"detail", r.detail},          {"tests_run", r.tests_run},
+            {"anchor", r.anchor},
             {"seconds", std::round(r.seconds * 1000) / 1000}};
 }
 
@@ -236,26 +240,96 @@ Outcome outcome_from(const std::string& s) {
 
 }  // namespace
 
-std::vector<std::pair<std::string, std::string>> read_equivalents(const fs::path& file) {
-    std::vector<std::pair<std::string, std::string>> out;
+std::string anchor(const std::string& text, const Mutant& m) {
+    std::size_t a = std::min(m.offset, text.size());
+    while (a > 0 && text[a - 1] != '\n') --a;
+    std::size_t b = text.find('\n', a);
+    if (b == std::string::npos) b = text.size();
+    std::size_t first = a;
+    while (first < b && (text[first] == ' ' || text[first] == '\t')) ++first;
+    std::size_t last = b;
+    while (last > first && std::isspace(static_cast<unsigned char>(text[last - 1]))) --last;
+    std::uint32_t h = 2166136261u;  // FNV-1a
+    for (std::size_t i = first; i < last; ++i) {
+        h ^= static_cast<unsigned char>(text[i]);
+        h *= 16777619u;
+    }
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%08x+%zu", h, m.offset - first + 1);
+    return buf;
+}
+
+std::string Equivalent::key() const {
+    return file + ":" + std::to_string(line) + ":" + std::to_string(col) + " | " + original + " -> " + mutated;
+}
+
+std::vector<Equivalent> read_equivalents(const fs::path& file) {
+    std::vector<Equivalent> out;
     if (!fs::exists(file)) return out;
     std::istringstream in(read_text(file));
     std::string line;
     for (int n = 1; std::getline(in, line); ++n) {
         const std::string t = trim(line);
         if (t.empty() || t[0] == '#') continue;
-        // file:line:col | original -> mutated | reason
-        const auto bar1 = t.find(" | ");
-        const auto bar2 = bar1 == std::string::npos ? std::string::npos : t.find(" | ", bar1 + 3);
-        const auto arrow = bar1 == std::string::npos ? std::string::npos : t.find(" -> ", bar1 + 3);
-        if (bar1 == std::string::npos || arrow == std::string::npos || bar2 == std::string::npos || arrow > bar2)
-            throw std::runtime_error(file.string() + ":" + std::to_string(n) +
-                                     ": expected 'file:line:col | original -> mutated | reason'");
-        const std::string reason = trim(t.substr(bar2 + 3));
-        if (reason.empty()) throw std::runtime_error(file.string() + ":" + std::to_string(n) + ": the reason is missing");
-        out.push_back({trim(t.substr(0, bar1)) + " | " + trim(t.substr(bar1 + 3, arrow - bar1 - 3)) + " -> " +
-                           trim(t.substr(arrow + 4, bar2 - arrow - 4)),
-                       reason});
+        auto bad = [&](const std::string& why) {
+            return std::runtime_error(file.string() + ":" + std::to_string(n) + ": " + why);
+        };
+        // file:line:col | original -> mutated | [anchor |] reason
+        std::vector<std::string> fields;
+        for (std::size_t p = 0;;) {
+            const auto q = t.find(" | ", p);
+            if (q == std::string::npos || fields.size() == 3) {
+                fields.push_back(trim(t.substr(p)));
+                break;
+            }
+            fields.push_back(trim(t.substr(p, q - p)));
+            p = q + 3;
+        }
+        const std::regex where(R"((.+):(\d+):(\d+))"), change(R"((.+) -> (.+))"), anch(R"([0-9a-f]{8}\+\d+)");
+        std::smatch w, c;
+        if (fields.size() < 3 || !std::regex_match(fields[0], w, where) || !std::regex_match(fields[1], c, change))
+            throw bad("expected 'file:line:col | original -> mutated | anchor | reason' (the report's survivor line and a reason)");
+        Equivalent e;
+        e.file = w[1];
+        e.line = std::stoi(w[2]);
+        e.col = std::stoi(w[3]);
+        e.original = trim(c[1]);
+        e.mutated = trim(c[2]);
+        e.entry_line = n;
+        if (fields.size() == 4 && std::regex_match(fields[2], anch)) {
+            e.anchor = fields[2];
+            e.reason = fields[3];
+        } else {  // the old format: the reason is everything after the change
+            const auto p1 = t.find(" | "), p2 = t.find(" | ", p1 + 3);
+            e.reason = trim(t.substr(p2 + 3));
+        }
+        if (e.reason.empty()) throw bad("the reason is missing");
+        out.push_back(std::move(e));
+    }
+    return out;
+}
+
+std::vector<int> match_equivalents(const std::vector<Equivalent>& entries, const std::vector<Mutant>& mutants,
+                                   const std::map<std::string, std::string>& texts) {
+    std::vector<int> out(entries.size(), -1);
+    std::map<std::string, std::vector<int>> by_change;  // file | original -> mutated: candidates
+    for (std::size_t i = 0; i < mutants.size(); ++i)
+        by_change[mutants[i].file + " | " + mutants[i].original + " -> " + mutants[i].mutated].push_back(static_cast<int>(i));
+    for (std::size_t k = 0; k < entries.size(); ++k) {
+        const Equivalent& e = entries[k];
+        auto it = by_change.find(e.file + " | " + e.original + " -> " + e.mutated);
+        if (it == by_change.end()) continue;
+        const auto text = texts.find(e.file);
+        int best = -1, best_dist = 0;
+        for (int i : it->second) {
+            const Mutant& m = mutants[static_cast<std::size_t>(i)];
+            if (e.anchor.empty() ? (m.line != e.line || m.col != e.col)
+                                 : (text == texts.end() || anchor(text->second, m) != e.anchor))
+                continue;
+            const int dist = std::abs(m.line - e.line);
+            if (best < 0 || dist < best_dist) best = i, best_dist = dist;
+        }
+        out[k] = best;
     }
     return out;
 }
@@ -328,18 +402,25 @@ MutateReport run_mutate(const MutateOptions& opt) {
         std::sort(chosen.begin(), chosen.end(), [](const Mutant& a, const Mutant& b) { return a.id < b.id; });
     }
 
-    // 2. Equivalents (reviewed by an instructor) and what the log already holds.
-    const auto equivalents = read_equivalents(lab_dir / "equivalent-mutants.txt");
-    std::map<std::string, std::string> equivalent;
+    // 2. Equivalents (reviewed by an instructor): matched by their anchor (the line's text and the column in
+    //    it), so that they survive lines moving above them; and what the log already holds.
+    std::map<std::string, std::string> equivalent;  // mutant key (today's line and column) -> reason
     {
-        std::set<std::string> keys;
-        for (const auto& f : files)
-            for (const auto& m : f.mutants()) keys.insert(m.key());
-        for (const auto& [k, why] : equivalents) {
-            equivalent[k] = why;
-            if (!keys.count(k)) rep.stale_equivalents.push_back(k);
+        const auto entries = read_equivalents(lab_dir / "equivalent-mutants.txt");
+        std::vector<Mutant> all;
+        std::map<std::string, std::string> by_file;
+        for (std::size_t f = 0; f < files.size(); ++f) {
+            by_file[files[f].file()] = files[f].text();
+            for (const auto& m : files[f].mutants()) all.push_back(m);
+        }
+        const auto match = match_equivalents(entries, all, by_file);
+        for (std::size_t k = 0; k < entries.size(); ++k) {
+            if (match[k] < 0) rep.stale_equivalents.push_back(entries[k].key());
+            else equivalent[all[static_cast<std::size_t>(match[k])].key()] = entries[k].reason;
         }
     }
+    std::map<std::string, std::string> text_of;  // file -> its text (for the anchors)
+    for (const auto& f : files) text_of[f.file()] = f.text();
     std::map<std::string, nlohmann::json> logged;
     if (opt.resume && !opt.log.empty() && fs::exists(opt.log)) {
         std::istringstream in(read_text(opt.log));
@@ -359,6 +440,7 @@ MutateReport run_mutate(const MutateOptions& opt) {
         }
         MutantResult r;
         r.mutant = m;
+        r.anchor = anchor(text_of.at(m.file), m);
         r.outcome = outcome_from(it->second.value("outcome", ""));
         r.mode = "log";
         r.detail = it->second.value("detail", "");
@@ -376,6 +458,7 @@ MutateReport run_mutate(const MutateOptions& opt) {
     std::mutex out_mutex;
     auto record = [&](MutantResult r) {  // the log line, as soon as a mutant is decided
         std::lock_guard lock(out_mutex);
+        r.anchor = anchor(text_of.at(r.mutant.file), r.mutant);
         if (r.outcome == Outcome::survived && equivalent.count(r.mutant.key())) {
             r.outcome = Outcome::equivalent;
             r.detail = equivalent[r.mutant.key()];
@@ -401,11 +484,16 @@ MutateReport run_mutate(const MutateOptions& opt) {
     std::set<int> rebuild_ids;
     std::map<std::string, std::set<int>> schema_ids;  // file -> ids compiled into its schema
     std::map<std::string, std::set<int>> relax_ids;  // file -> ids that need a relaxed schema
-    for (const auto& m : todo) {
-        if (m.schema_ok || m.needs_relax) schema_ids[m.file].insert(m.id);
-        else rebuild_ids.insert(m.id);
-        if (m.needs_relax) relax_ids[m.file].insert(m.id);
-    }
+    // Every mutant of a file goes into its schema, whatever the sample: the schema source is then the same for
+    // every run of the same code (samples, --only, --resume, full runs), so ccache compiles it once.
+    std::set<int> todo_ids;
+    for (const auto& m : todo) todo_ids.insert(m.id);
+    for (const auto& f : files)
+        for (const auto& m : f.mutants()) {
+            if (m.schema_ok || m.needs_relax) schema_ids[m.file].insert(m.id);
+            else if (todo_ids.count(m.id)) rebuild_ids.insert(m.id);
+            if (m.needs_relax) relax_ids[m.file].insert(m.id);
+        }
     std::vector<fs::path> schema_objects(files.size());
     {
         std::atomic<std::size_t> next{0};
@@ -420,7 +508,7 @@ MutateReport run_mutate(const MutateOptions& opt) {
                 const std::string stem = fs::path(file.file()).stem().string();
                 const fs::path src = scratch / "schema" / (stem + ".cpp"), obj = scratch / "schema" / (stem + ".o");
                 for (int attempt = 0;; ++attempt) {
-                    if (relax && attempt == 3) {
+                    if (relax && attempt == 30) {
                         // constexpr variables are needed as constants after all: their mutants are rebuilt alone
                         relax = false;
                         std::lock_guard lock(rebuild_mutex);
@@ -435,7 +523,7 @@ MutateReport run_mutate(const MutateOptions& opt) {
                     // kept for the curious: which sites a schema could not hold, and why
                     write_text(scratch / "schema" / (stem + ".attempt" + std::to_string(attempt) + ".log"), c.output);
                     write_text(scratch / "schema" / (stem + ".attempt" + std::to_string(attempt) + ".cpp"), read_text(src));
-                    if (ids.empty() || attempt >= 8) {
+                    if (ids.empty() || attempt >= 40) {
                         errors[f] = "the reference " + file.file() + " does not compile as a schema:\n" + c.output.substr(0, 4000);
                         break;
                     }
@@ -500,6 +588,7 @@ MutateReport run_mutate(const MutateOptions& opt) {
     RunOptions run;
     run.jobs = 1;
     run.output_cap = 256 << 10;
+    run.sandbox.no_network = false;  // the reference's own mutants: no untrusted code, and a namespace costs time
     {
         const fs::path report = scratch / "schema-report.txt";
         fs::remove(report);
@@ -555,7 +644,9 @@ MutateReport run_mutate(const MutateOptions& opt) {
         for (const auto& b : base) failing += !b.passed;
         say("baseline: " + std::to_string(tests.size()) + " tests in " + fmt_duration(rep.baseline_seconds) +
             (failing ? "; WARNING: " + std::to_string(failing) + " fail on the unmutated reference" : ", all pass") +
-            "; build " + fmt_duration(rep.build_seconds) + " (" + std::to_string(rebuild_ids.size()) + " mutants need a rebuild each)");
+            "; build " + fmt_duration(rep.build_seconds) + " (" +
+            std::to_string(std::count_if(todo.begin(), todo.end(), [&](const Mutant& m) { return rebuild_ids.count(m.id) > 0; })) +
+            " mutants need a rebuild each)");
     }
     // Cheap tests first.
     std::vector<std::size_t> cheap(tests.size());
@@ -563,16 +654,69 @@ MutateReport run_mutate(const MutateOptions& opt) {
     if (opt.order != "listing")
         std::stable_sort(cheap.begin(), cheap.end(), [&](std::size_t a, std::size_t b) { return base[a].seconds < base[b].seconds; });
 
+    // One process per mutant (--geolab-run-seq): its tests run in order in one process, stopping at the first
+    // failure, which is then confirmed in a process of its own as grading runs it. Only when the baseline
+    // passes every test in one such process too (no test depends on running alone).
+    auto short_limit = [&](std::size_t i) {
+        const double limit = tests[i].timeout_s > 0 ? tests[i].timeout_s : run.timeout_s;
+        return std::min(limit, opt.timeout_factor * base[i].seconds + 2.0);
+    };
+    struct SeqVerdict {
+        bool passed = false;
+        std::string message;
+    };
+    // Runs `order` (test indices) in one process of `prog`; the verdicts of the tests that ended, in order.
+    auto run_seq = [&](const fs::path& prog, const std::vector<std::size_t>& order, const RunOptions& o,
+                       const fs::path& dir) {
+        fs::create_directories(dir);
+        const fs::path list = dir / "seq.txt", out = dir / "seq.out";
+        std::string text;
+        double total = 5;
+        for (std::size_t i : order) {
+            char buf[32];
+            std::snprintf(buf, sizeof buf, "%.3f\t", short_limit(i));
+            text += buf + tests[i].name + "\n";
+            total += short_limit(i);
+        }
+        write_text(list, text);
+        fs::remove(out);
+        RunOptions so = o;
+        so.output_cap = 16 << 20;
+        (void)run_command({prog.string(), "--geolab-run-seq", list.string(), out.string()}, total, so);
+        std::vector<SeqVerdict> verdicts;
+        if (!fs::exists(out)) return verdicts;
+        std::istringstream in(read_text(out));
+        for (std::string line; std::getline(in, line);) {
+            const auto j = nlohmann::json::parse(line, nullptr, false);
+            if (j.is_discarded() || !j.is_object()) break;
+            SeqVerdict v;
+            v.passed = j.value("status", "") == "passed";
+            if (j.contains("messages") && j["messages"].is_array() && !j["messages"].empty() && j["messages"][0].is_string())
+                v.message = j["messages"][0].get<std::string>();
+            verdicts.push_back(v);
+        }
+        return verdicts;
+    };
+    bool seq_mode = !opt.full;
+    for (const auto& b : base) seq_mode = seq_mode && b.passed;
+    if (seq_mode) {
+        const auto v = run_seq(program, cheap, run, scratch / "baseline-seq");
+        seq_mode = v.size() == cheap.size() && std::all_of(v.begin(), v.end(), [](const SeqVerdict& x) { return x.passed; });
+        if (!seq_mode) say("note: the baseline does not pass its tests in one process: one process per test");
+    }
+
     // 5. The mutants, `jobs` at a time.
     std::map<std::string, std::size_t> last_killer;  // per file: the test that killed its latest mutant
+    std::vector<int> kills(tests.size(), 0);         // per test: the mutants it killed so far
     std::atomic<std::size_t> next{0}, finished{0};
     std::atomic<std::size_t> tests_run{0};
     std::map<int, const SourceFile*> file_of;
     for (const auto& f : files)
         for (const auto& m : f.mutants()) file_of[m.id] = &f;
-    // rebuilds first: their compiles overlap with the cheap schema runs of the other jobs
+    // the schema's mutants first (about 1 s each), the rebuilt ones last (a compile and a link each, and every
+    // test): an interrupted run (--resume) has the most verdicts
     std::stable_sort(todo.begin(), todo.end(), [&](const Mutant& a, const Mutant& b) {
-        return rebuild_ids.count(a.id) > rebuild_ids.count(b.id);
+        return rebuild_ids.count(a.id) < rebuild_ids.count(b.id);
     });
     const auto t_run = Clock::now();
     auto grade = [&](const Mutant& m, int job) {
@@ -633,10 +777,14 @@ MutateReport run_mutate(const MutateOptions& opt) {
             r.mode = "schema";
             o.env.push_back("GEOLAB_MUTANT=" + std::to_string(m.id));
         }
-        // The order: the test that killed this file's previous mutant first, then the cheap ones.
+        // The order: the test that killed this file's previous mutant first, then by kills so far per second
+        // of run time (the likeliest killer per cost first), the cheap ones among equals.
         std::vector<std::size_t> order = cheap;
         if (opt.order == "killer") {
             std::lock_guard lock(out_mutex);
+            std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+                return (kills[a] + 0.5) / (base[a].seconds + 0.02) > (kills[b] + 0.5) / (base[b].seconds + 0.02);
+            });
             auto k = last_killer.find(m.file);
             if (k != last_killer.end()) {
                 order.erase(std::find(order.begin(), order.end(), k->second));
@@ -649,10 +797,34 @@ MutateReport run_mutate(const MutateOptions& opt) {
                         order.end());
         r.outcome = Outcome::survived;
         if (order.empty()) r.detail = "no test reaches this code";
-        for (std::size_t i : order) {
+        std::size_t from = 0;           // where the one-process-per-test loop below starts
+        bool at_own_limit = false;      // its first test ended the sequence's process: decide at the test's limit
+        if (seq_mode && !order.empty()) {
+            const auto v = run_seq(prog, order, o, scratch / ("job" + std::to_string(job)));
+            r.tests_run += static_cast<int>(v.size());
+            if (v.size() == 1 && !v.back().passed) {
+                // the first test of a fresh process: exactly as grading runs it, nothing to confirm
+                r.outcome = Outcome::killed;
+                r.detail = "'" + tests[order[0]].name + "' failed";
+                if (!v.back().message.empty()) r.detail += ": " + v.back().message.substr(0, 200);
+                std::lock_guard lock(out_mutex);
+                last_killer[m.file] = order[0];
+                ++kills[order[0]];
+                from = order.size();
+            } else if (!v.empty() && !v.back().passed) {
+                from = v.size() - 1;  // a failure after other tests: confirmed alone below
+            } else if (v.size() == order.size()) {
+                from = order.size();  // all passed: survived
+            } else {  // a crash, the time limit, the output cap
+                from = v.size();
+                at_own_limit = true;
+            }
+        }
+        for (std::size_t pos = from; pos < order.size(); ++pos) {
+            const std::size_t i = order[pos];
             TestInfo t = tests[i];
             const double limit = t.timeout_s > 0 ? t.timeout_s : o.timeout_s;
-            t.timeout_s = std::min(limit, opt.timeout_factor * base[i].seconds + 2.0);
+            t.timeout_s = at_own_limit && pos == from ? limit : std::min(limit, opt.timeout_factor * base[i].seconds + 2.0);
             TestResult tr = run_test(prog, t, o);
             ++r.tests_run;
             if (tr.status == Status::timeout && t.timeout_s < limit) {
@@ -669,6 +841,7 @@ MutateReport run_mutate(const MutateOptions& opt) {
                 if (!tr.messages.empty()) r.detail += ": " + tr.messages.front().substr(0, 200);
                 std::lock_guard lock(out_mutex);
                 last_killer[m.file] = i;
+                ++kills[i];
             }
             if (!opt.full) break;
         }
@@ -746,10 +919,12 @@ std::string format_report(const MutateReport& rep) {
                   killed + timed, killed + timed + survived);
     os << buf;
     if (survived) {
-        os << "survivors (file:line:col | original -> mutated): add a test that kills each, or mark it equivalent\n";
+        os << "survivors (file:line:col | original -> mutated | anchor): add a test that kills each, or mark it "
+              "equivalent (copy the line, add ' | reason')\n";
         for (const auto& r : rep.results)
             if (r.outcome == Outcome::survived)
-                os << "  " << r.mutant.key() << (r.detail.empty() ? "" : "   [" + r.detail + "]") << "\n";
+                os << "  " << r.mutant.key() << (r.anchor.empty() ? "" : " | " + r.anchor)
+                   << (r.detail.empty() ? "" : "   [" + r.detail + "]") << "\n";
     }
     if (equiv) {
         os << "equivalent (reviewed):\n";

@@ -17,6 +17,7 @@
 
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -30,6 +31,7 @@
 #include <random>
 
 #include <fcntl.h>
+#include <sys/time.h>
 
 #include "geolab/errors.hpp"
 #include "geolab/grading/boundary_calls.hpp"
@@ -42,6 +44,8 @@ using nlohmann::json;
 std::string g_token;
 char g_token_buf[128] = {};  // constant-initialized: usable before any dynamic initialization
 int g_result_fd = -1;
+int g_seq_fd = -1;  // --geolab-run-seq: one verdict line per test, no token (geolab mutate, trusted code only)
+bool g_seq_passed = false;  // --geolab-run-seq: the last test's verdict
 struct VerdictListener;
 VerdictListener* g_verdict = nullptr;
 
@@ -215,6 +219,16 @@ struct VerdictListener : doctest::IReporter {
     // The verdict line to the grader's pipe. `stopped`: why a replay ended the test early (empty: it did not);
     // `input`: the test's INFO/CAPTURE contexts where it stopped (the fixture it was on).
     void send(const char* status, bool not_implemented, const std::string& stopped, const std::string& input) {
+        if (g_seq_fd >= 0) {  // --geolab-run-seq: the verdict of this test; the next one follows
+            g_seq_passed = std::strcmp(status, "passed") == 0;
+            const std::string line = json{{"ran", ran}, {"status", status}, {"messages", messages}}.dump() + "\n";
+            for (std::size_t done = 0; done < line.size();) {
+                const ssize_t w = ::write(g_seq_fd, line.data() + done, line.size() - done);
+                if (w <= 0) break;
+                done += static_cast<std::size_t>(w);
+            }
+            return;
+        }
         if (g_result_fd < 0) return;
         const geolab::boundary::Channel& ch = geolab::boundary::channel();
         json j{{"ran", ran},
@@ -351,6 +365,42 @@ int main(int argc, char** argv) {
             std::cout.flush();
             return 0;  // the verdict went through the pipe; the exit status means nothing to the grader
         }
+    }
+    // geolab mutate (the reference with one mutant, trusted code): PROG --geolab-run-seq LIST OUT runs the tests
+    // named in LIST (one "SECONDS<tab>NAME" per line) in that order in this one process, appends one JSON verdict
+    // line per test to OUT, and stops after the first failure. A test past its SECONDS is ended by SIGALRM; a
+    // crash or hang ends the process: the first test not answered in OUT is the culprit.
+    for (int i = 1; i + 2 < argc; ++i) {
+        if (std::strcmp(argv[i], "--geolab-run-seq") != 0) continue;
+        std::ifstream list(argv[i + 1]);
+        g_seq_fd = ::open(argv[i + 2], O_WRONLY | O_CREAT | O_TRUNC | O_APPEND | O_CLOEXEC, 0644);
+        if (!list || g_seq_fd < 0) {
+            std::cerr << "--geolab-run-seq: cannot read " << argv[i + 1] << " or write " << argv[i + 2] << "\n";
+            return 2;
+        }
+        std::signal(SIGALRM, SIG_DFL);
+        for (std::string entry; std::getline(list, entry);) {
+            const auto tab = entry.find('\t');
+            if (tab == std::string::npos) continue;
+            const double seconds = std::atof(entry.substr(0, tab).c_str());
+            const std::string name = entry.substr(tab + 1);
+            itimerval limit{};
+            limit.it_value.tv_sec = static_cast<time_t>(seconds);
+            limit.it_value.tv_usec = static_cast<suseconds_t>((seconds - static_cast<double>(limit.it_value.tv_sec)) * 1e6);
+            if (seconds > 0) ::setitimer(ITIMER_REAL, &limit, nullptr);
+            const std::string filter = "--test-case=" + name;
+            const char* args[] = {argv[0], filter.c_str(), "--case-sensitive", "--no-breaks", "--no-version"};
+            context.clearFilters();
+            context.applyCommandLine(5, args);
+            g_seq_passed = false;
+            context.run();
+            const itimerval off{};
+            ::setitimer(ITIMER_REAL, &off, nullptr);
+            std::cout.flush();
+            if (!g_seq_passed) break;
+        }
+        ::close(g_seq_fd);
+        return 0;
     }
     // Record and replay (geolab/grading/boundary_calls.hpp).
     for (int i = 1; i + 1 < argc; ++i) {

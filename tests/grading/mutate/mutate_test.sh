@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # geolab mutate on the fixture lab 99_tiny: usage: mutate_test.sh GEOLAB FIXTURE_TREE BUILD_DIR
-# Checks: the known mutant is killed, the reviewed equivalent survives and is reported as equivalent, the weak
+# Checks: the known mutant is killed, the reviewed equivalent (its entry found by its anchor, not its stale line
+# number) survives and is reported as equivalent, the weak
 # test leaves a survivor, an ill-typed mutant is stillborn, an endless loop is timed out, nothing in a comment
 # or a string is mutated, --resume skips logged mutants, and SIGTERM leaves solutions/ as it was.
 set -u

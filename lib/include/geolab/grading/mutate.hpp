@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <set>
 #include <string>
 #include <vector>
@@ -143,6 +144,7 @@ struct MutantResult {
     Outcome outcome = Outcome::survived;
     std::string mode;      //!< "schema", "rebuild", or "log" (taken from --log on --resume)
     std::string detail;    //!< the killing test and its status, or the compiler's first error
+    std::string anchor;    //!< see anchor(): what equivalent-mutants.txt matches
     int tests_run = 0;
     double seconds = 0;
 };
@@ -172,8 +174,34 @@ MutateReport run_mutate(const MutateOptions& opt);
 std::string format_report(const MutateReport& rep);
 std::string report_json(const MutateReport& rep);
 
-//! The entries of an equivalent-mutants.txt: "file:line:col | original -> mutated | reason" per line, '#'
-//! comments; returns key → reason. \throw std::runtime_error "PATH:LINE: ..." on a malformed line.
-std::vector<std::pair<std::string, std::string>> read_equivalents(const std::filesystem::path& file);
+//! The anchor of a mutant in `text` (its file): "HHHHHHHH+C", the FNV-1a hash (32 bits, hex) of the mutated
+//! token's source line with surrounding white space removed, and the token's 1-based column in that trimmed
+//! line. It does not change when lines are inserted or removed above the site, or the line is re-indented.
+std::string anchor(const std::string& text, const Mutant& m);
+
+//! One reviewed equivalent mutant (a line of equivalent-mutants.txt).
+struct Equivalent {
+    std::string file;                 //!< e.g. "src/qef.cpp"
+    int line = 0, col = 0;            //!< where it was when reviewed (a hint when `anchor` is given)
+    std::string original, mutated;
+    std::string anchor;               //!< "HHHHHHHH+C" (see anchor()); empty in the old three-field format
+    std::string reason;
+    int entry_line = 0;               //!< its line in equivalent-mutants.txt
+    //! "file:line:col | original -> mutated", as the report names mutants.
+    std::string key() const;
+};
+
+//! The entries of an equivalent-mutants.txt, one per line, '#' comments:
+//! "file:line:col | original -> mutated | anchor | reason" (anchor: see anchor()), or the old
+//! "file:line:col | original -> mutated | reason" (matched by line and column only).
+//! \throw std::runtime_error "PATH:LINE: ..." on a malformed line.
+std::vector<Equivalent> read_equivalents(const std::filesystem::path& file);
+
+//! Which mutant each entry names (index into `mutants`, or -1: none, a stale entry). With an anchor: the
+//! mutant of the same file and change whose anchor is the entry's, the nearest to the entry's line (the line
+//! number is only a hint: the code may have moved). Without: the mutant whose key() is the entry's.
+//! `texts` maps a file ("src/qef.cpp") to its current text.
+std::vector<int> match_equivalents(const std::vector<Equivalent>& entries, const std::vector<Mutant>& mutants,
+                                   const std::map<std::string, std::string>& texts);
 
 }  // namespace geolab::grading::mutate
