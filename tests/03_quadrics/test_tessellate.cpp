@@ -71,6 +71,22 @@ TEST_SUITE("Task 6: tessellation") {
             const double qn = max_abs(Q);
             for (const auto& p : m.positions)
                 CHECK(std::abs(double(value_ld(Q, p))) <= 1e-10 * qn * std::max(1.0, glm::dot(p, p)));
+            // the poles and the equator's points at ω = 0 and ω = π/2 end the principal semi-axes: mutually orthogonal
+            // from the centre, and the surface normal there points straight away from the centre
+            const glm::dvec3 centre = apply(M, glm::dvec3(0.0));
+            const std::size_t ring0 = 2 + 11 * 48;  // η = 0 is ring 12
+            const glm::dvec3 ends[3] = {m.positions[1], m.positions[ring0 + 24], m.positions[ring0 + 36]};
+            for (int i = 0; i < 3; ++i) {
+                const glm::dvec3 axis = glm::normalize(ends[i] - centre);
+                const glm::dvec3 g = glm::normalize(glm::dvec3(Q * glm::dvec4(ends[i], 1.0)));
+                CHECK_MESSAGE(std::abs(std::abs(glm::dot(axis, g)) - 1) <= 1e-9,
+                              "vertex " << (i == 0 ? std::string("1 (north pole)") : std::to_string(ring0 + (i == 1 ? 24 : 36)))
+                                        << " at " << str(ends[i]) << " should end a principal semi-axis (normal ∥ "
+                                        << "vertex − centre): use A's eigenvectors as the axes");
+                for (int k = 0; k < i; ++k)
+                    CHECK_MESSAGE(std::abs(glm::dot(axis, glm::normalize(ends[k] - centre))) <= 1e-9,
+                                  "the principal semi-axes to vertices of the pole and the equator must be orthogonal");
+            }
             const double exact = 4 * pi / 3 * a * b * c * s * s * s, v = double(signed_volume(m));
             CHECK_MESSAGE((v > 0 && std::abs(v - exact) / exact < 0.01),
                           "mesh volume " << v << ", exact " << exact << " (negative: the faces point inwards)");

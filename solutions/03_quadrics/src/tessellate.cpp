@@ -85,9 +85,9 @@ PolygonSoup tessellate_ellipsoid(const glm::dmat4& Q, int n_eta, int n_omega) {
     glm::dmat3 V;
     jacobi3(A, ev, V);
     const double big = std::max({std::abs(ev.x), std::abs(ev.y), std::abs(ev.z)});
-    const bool definite = big > 0 && ((ev.x > 1e-9 * big && ev.y > 1e-9 * big && ev.z > 1e-9 * big) ||
-                                      (ev.x < -1e-9 * big && ev.y < -1e-9 * big && ev.z < -1e-9 * big));
-    if (!definite) throw std::invalid_argument("tessellate_ellipsoid: Q is not an ellipsoid (A is not definite)");
+    for (int i = 0; i < 3; ++i)
+        if (!(std::abs(ev[i]) > 1e-9 * big))
+            throw std::invalid_argument("tessellate_ellipsoid: Q is not an ellipsoid (A is singular)");
     // centre c = −A⁻¹ b; there (x − c)ᵀ A (x − c) = −k with k the value of XᵀQX at c
     const glm::dvec3 c = -(glm::inverse(A) * b);
     const double k = glm::dot(c, A * c) + 2 * glm::dot(b, c) + Q[3][3];
