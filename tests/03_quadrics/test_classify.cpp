@@ -89,6 +89,12 @@ TEST_SUITE("Task 3: classification") {
         glm::dmat4 nan = to_glm(canonical(QuadricType::real_ellipsoid, 1, 1, 1));
         nan[1][1] = std::nan("");
         CHECK_THROWS_AS(classify(nan), std::invalid_argument);
+        for (auto [c, r] : {std::pair{3, 0}, std::pair{0, 3}, std::pair{3, 3}, std::pair{2, 3}}) {
+            glm::dmat4 bad = to_glm(canonical(QuadricType::real_ellipsoid, 1, 1, 1));
+            bad[c][r] = INFINITY;
+            INFO("an infinite entry at [" << c << "][" << r << "] must be rejected");
+            CHECK_THROWS_AS(classify(bad), std::invalid_argument);
+        }
         expect_type(to_glm(canonical(QuadricType::real_ellipsoid, 1, 1, 1)), QuadricType::real_ellipsoid,
                     "unit sphere after the rejected inputs");
     }

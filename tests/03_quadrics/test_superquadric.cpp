@@ -54,6 +54,10 @@ TEST_SUITE("Task 5: superquadrics") {
         }
         CHECK_THROWS_AS(inside_outside({{1, 1, 1}, 0, 1}, p), std::invalid_argument);
         CHECK_THROWS_AS(inside_outside({{1, -1, 1}, 1, 1}, p), std::invalid_argument);
+        CHECK_THROWS_AS(inside_outside({{0, 1, 1}, 1, 1}, p), std::invalid_argument);
+        CHECK_THROWS_AS(inside_outside({{1, 0, 1}, 1, 1}, p), std::invalid_argument);
+        CHECK_THROWS_AS(inside_outside({{1, 1, 0}, 1, 1}, p), std::invalid_argument);
+        CHECK_THROWS_AS(inside_outside({{1, 1, 1}, 1, 0}, p), std::invalid_argument);
     }
 
     TEST_CASE("superquadrics: superquadric_point lies on F = 1 in the right octant for all angles and exponents" *
@@ -157,6 +161,11 @@ TEST_SUITE("Task 5: superquadrics") {
             INFO(str(s) << ", " << str(ray) << " (aimed inside): got " << (got ? "t = " + std::to_string(got->t) : std::string("no hit")));
             REQUIRE(got.has_value());
             CHECK(std::abs(double(F_ld(s, got->point)) - 1) <= 1e-7 * std::max(1.0, 2 / std::min(s.e1, s.e2)));
+            const glm::dvec3 gw = glm::normalize(grad_F(s, got->point));
+            const bool near_plane = std::abs(got->point.x) < 1e-3 || std::abs(got->point.y) < 1e-3 || std::abs(got->point.z) < 1e-3;
+            if (!near_plane)
+                CHECK_MESSAGE(glm::length(got->normal - gw) <= 1e-6,
+                              "the hit's normal should be ∇F normalized, " << str(gw) << ", got " << str(got->normal));
             for (int k = 0; k < 400; ++k)  // nothing crossed before: F stays > 1 up to the hit
                 CHECK(F_ld(s, ray.origin + got->t * (k / 400.0) * ray.direction) > 1);
         }
