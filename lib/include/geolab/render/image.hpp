@@ -6,12 +6,15 @@
 #include <filesystem>
 #include <vector>
 
+#include "geolab/boundary.hpp"
+
 namespace geolab::render {
 
 //! width × height pixels, 4 bytes (R, G, B, A) each, rows stored top to bottom.
 struct Image {
     int width = 0, height = 0;
     std::vector<std::uint8_t> rgba;  //!< size 4 · width · height
+    GEOLAB_FIELDS(width, height, rgba)  // what crosses the grading boundary (lab 03 renders images)
 
     //! The (R, G, B, A) of pixel (x, y); (0, 0) is the top-left corner. \pre 0 ≤ x < width, 0 ≤ y < height.
     std::array<std::uint8_t, 4> pixel(int x, int y) const {
