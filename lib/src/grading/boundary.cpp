@@ -256,6 +256,9 @@ void memo_store(const std::string& key, std::uint64_t digest) {
 }
 
 void memo_clear() { memo().clear(); }
+void memo_forget(const std::vector<std::string>& keys) {
+    for (const auto& k : keys) memo().erase(k);
+}
 
 CallContext*& current_call() {
     static CallContext* c = nullptr;

@@ -260,8 +260,11 @@ bool shallow(wire::Writer& w, const T& v) {
 //! performer and the judge alike.
 std::uint64_t* memo_digest(const std::string& shallow_key);
 void memo_store(const std::string& shallow_key, std::uint64_t digest);
-//! Forget every memoised digest (after each call that changes an argument: both processes at the same point).
+//! Forget every memoised digest.
 void memo_clear();
+//! Forget the digests memoised under these keys (after each call that changes an argument, the keys of its
+//! out-arguments before and after the call: both processes at the same point).
+void memo_forget(const std::vector<std::string>& shallow_keys);
 
 //! A 64-bit digest of an input argument as encoded on the wire (0 for callbacks, which are not values). The
 //! performer records one per argument; the judge requires its own arguments to give the same digests.
@@ -293,6 +296,24 @@ std::uint64_t arg_digest(A& a) {
             const std::uint64_t d = std::hash<std::string_view>{}(w.buffer()) | 1;
             if (!key.empty() && w.buffer().size() >= 4096) memo_store(key, d);
             return d;
+        }
+    }
+}
+//! Appends the shallow key (as arg_digest makes it) of an out-argument's object: the digest memoised under it may
+//! be out of date once the call has changed the object.
+template <class A>
+void out_key(std::vector<std::string>& keys, A& a) {
+    if constexpr (is_out_ref<A> || is_out_ptr<A>) {
+        using T = std::remove_cvref_t<std::remove_pointer_t<std::remove_reference_t<A>>>;
+        if constexpr (std::is_class_v<T>) {
+            const T* obj = nullptr;
+            if constexpr (is_out_ptr<A>) obj = a;
+            else obj = &a;
+            if (!obj) return;
+            wire::Writer k;
+            const std::string_view type = typeid(T).name();
+            k.bytes(type.data(), type.size());
+            if (shallow(k, *obj)) keys.push_back(std::move(k.buffer()));
         }
     }
 }
@@ -369,6 +390,8 @@ struct Impl {
             (w.u64(arg_digest<P>(p)), ...);
             current_call() = outer;
         }
+        std::vector<std::string> out_keys;  // the out-arguments' memo keys, before the call and after it
+        (out_key<P>(out_keys, p), ...);
         struct Scope {
             Channel& ch;
             CallContext& c;
@@ -391,7 +414,10 @@ struct Impl {
                 for (const Source& src : c.sources)
                     if (src.stand_in && *slot == src.stand_in) *slot = original;
             (restore_out<P>(c, p), ...);
-            if constexpr (((is_out_ref<P> || is_out_ptr<P>) || ...)) memo_clear();
+            if constexpr (((is_out_ref<P> || is_out_ptr<P>) || ...)) {
+                (out_key<P>(out_keys, p), ...);
+                memo_forget(out_keys);
+            }
         };
         try {
             if constexpr (std::is_void_v<R>) {
@@ -482,6 +508,8 @@ struct Impl {
                 ++index;
             };
             (check(arg_digest<P>(p)), ...);
+            std::vector<std::string> out_keys;  // as the performer: before the call and after it
+            (out_key<P>(out_keys, p), ...);
             const std::uint8_t outcome = replay_events(r);
             if (outcome == 0) {
                 if constexpr (!std::is_void_v<R>) wire::read(r, value);
@@ -489,7 +517,10 @@ struct Impl {
                 thrown = read_exception(r);
             }
             (read_out<P>(r, p), ...);
-            if constexpr (((is_out_ref<P> || is_out_ptr<P>) || ...)) memo_clear();
+            if constexpr (((is_out_ref<P> || is_out_ptr<P>) || ...)) {
+                (out_key<P>(out_keys, p), ...);
+                memo_forget(out_keys);
+            }
         } catch (const wire::Error& e) {
             stop(e.kind == wire::Error::truncated ? "eof" : "malformed",
                  std::string(e.what()) + " (in the answer of call " + std::to_string(n) + ", " + name + ")");
