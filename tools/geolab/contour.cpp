@@ -26,7 +26,7 @@ nlohmann::json run_json(const Input& in, const Run& r, const std::string& out, d
         j["input"].update({{"path", in.path.string()},
                            {"vertices", in.mesh->n_vertices()},
                            {"faces", in.mesh->n_faces()},
-                           {"volume", dc::signed_volume(*in.mesh)}});
+                           {"volume", in.volume}});
     j["warnings"] = nlohmann::json::array();
     if (!in.warning.empty()) j["warnings"].push_back(in.warning);
     j["octree"] = octree_name(r.octree);
@@ -121,7 +121,7 @@ void print_run(const Input& in, const Run& r, const std::string& out, dc::PoleFi
       << " × the " << (r.octree == dc::Coordinates::cartesian ? "cell size " : "radial cell step ")
       << fmt("%.3g", r.cell) << "\n"
       << "            volume " << fmt("%.6g", r.volume);
-    if (in.mesh) o << " (input mesh " << fmt("%.6g", dc::signed_volume(*in.mesh)) << ")";
+    if (in.mesh) o << " (input mesh " << fmt("%.6g", in.volume) << ")";
     o << "\n";
     o << "time        ";
     if (in.mesh) o << "read " << fmt("%.3f", in.read_seconds) << " s, ";

@@ -78,6 +78,7 @@ struct Input {
     std::shared_ptr<const ScalarField> field;
     std::shared_ptr<const MeshField> mesh_field;  // == field for meshes
     double read_seconds = 0.0, field_seconds = 0.0;
+    double volume = 0.0;  // a mesh input's signed volume (dc::signed_volume)
     std::string warning;  // set when a mesh input cannot bound a solid (flat, open or zero volume)
 };
 
@@ -124,9 +125,9 @@ inline Input load_input(const std::string& arg, std::ostream* log) {
         glm::dvec3 lo(INFINITY), hi(-INFINITY);
         for (const auto& p : in.mesh->positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
         const double diagonal = in.mesh->positions.empty() ? 0.0 : glm::length(hi - lo);
-        const double volume = dc::signed_volume(*in.mesh);
-        if (!(std::abs(volume) > 1e-6 * diagonal * diagonal * diagonal))
-            in.warning = arg + " encloses no volume (|V| = " + fmt("%.3g", std::abs(volume)) +
+        in.volume = dc::signed_volume(*in.mesh);
+        if (!(std::abs(in.volume) > 1e-6 * diagonal * diagonal * diagonal))
+            in.warning = arg + " encloses no volume (|V| = " + fmt("%.3g", std::abs(in.volume)) +
                          ", bounding-box diagonal " + fmt("%.3g", diagonal) +
                          "): a flat or open input has no inside, and the output is not a solid's surface";
         if (log && !in.warning.empty()) *log << "  warning: " << in.warning << std::endl;

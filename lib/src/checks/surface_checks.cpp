@@ -140,13 +140,8 @@ Meet improper_meeting(const Triangle& t, const Triangle& u, const std::vector<dv
         const int orient_r = orient3d(v, p, q, r), orient_s = orient3d(v, p, q, s);
         // u touches t's plane only at v: the triangles meet nowhere else (the common case, decided quickly)
         if (orient_r * orient_s > 0) return Meet::none;
-        if (orient_r == 0 && orient_s == 0) {  // coplanar: do the corners overlap?
-            const int k = projection_axis(v, p, q);
-            const dvec2 V = project(v, k), P = project(p, k), Q = project(q, k), R = project(r, k), S = project(s, k);
-            const bool overlap = in_cone_2d(V, P, Q, R) || in_cone_2d(V, P, Q, S) || in_cone_2d(V, R, S, P) ||
-                                 in_cone_2d(V, R, S, Q);
-            return overlap ? Meet::vertex : Meet::none;
-        }
+        // coplanar: u is then proper in t's projection too, so the corner test above ran and found an overlap
+        if (orient_r == 0 && orient_s == 0) return Meet::vertex;
         // not coplanar: the two triangles meet in a segment from v; it leaves v only if it reaches an edge
         // opposite v in one of them
         const dvec3& w = U[j];

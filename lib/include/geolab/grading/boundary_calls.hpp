@@ -266,6 +266,15 @@ void memo_clear();
 //! out-arguments before and after the call: both processes at the same point).
 void memo_forget(const std::vector<std::string>& shallow_keys);
 
+//! The memo key of an object: its type and its shallow summary; empty when shallow() cannot summarise it.
+template <class T>
+std::string shallow_key(const T& v) {
+    wire::Writer k;
+    const std::string_view type = typeid(T).name();
+    k.bytes(type.data(), type.size());
+    return shallow(k, v) ? std::move(k.buffer()) : std::string();
+}
+
 //! A 64-bit digest of an input argument as encoded on the wire (0 for callbacks, which are not values). The
 //! performer records one per argument; the judge requires its own arguments to give the same digests.
 template <class A>
@@ -284,13 +293,9 @@ std::uint64_t arg_digest(A& a) {
         } else {
             std::string key;
             if constexpr (std::is_class_v<T> && std::is_reference_v<A>) {
-                wire::Writer k;
-                const std::string_view type = typeid(T).name();
-                k.bytes(type.data(), type.size());
-                if (shallow(k, a)) {
-                    key = std::move(k.buffer());
+                key = shallow_key<T>(a);
+                if (!key.empty())
                     if (const std::uint64_t* d = memo_digest(key)) return *d;
-                }
             }
             wire::write(w, a);
             const std::uint64_t d = std::hash<std::string_view>{}(w.buffer()) | 1;
@@ -310,10 +315,7 @@ void out_key(std::vector<std::string>& keys, A& a) {
             if constexpr (is_out_ptr<A>) obj = a;
             else obj = &a;
             if (!obj) return;
-            wire::Writer k;
-            const std::string_view type = typeid(T).name();
-            k.bytes(type.data(), type.size());
-            if (shallow(k, *obj)) keys.push_back(std::move(k.buffer()));
+            if (std::string k = shallow_key<T>(*obj); !k.empty()) keys.push_back(std::move(k));
         }
     }
 }
