@@ -13,24 +13,33 @@ namespace {
 
 // A corner k of the soup is the directed edge from soup.indices[k] to the next vertex of its face.
 // `out` lists the corners by their start vertex (a counting sort): the corners leaving u are
-// out[start[u] .. start[u+1]), each stored with the vertex it goes to, sorted by (to, corner), so the
-// corners from u to v are found by binary search: O(log valence), not O(valence) (a fan's apex has thousands).
+// out[start[u] .. start[u+1]), each stored with the vertex it goes to. A bucket of typical size (at most
+// kScanned corners: one or two cache lines) is scanned; a longer one is sorted by (to, corner) and searched by
+// bisection, so a fan's apex (thousands of corners) costs O(log valence) a look-up, not O(valence).
 struct DirectedEdges {
     struct Out {
         std::uint32_t to;
         std::uint32_t corner;
         bool operator<(const Out& o) const { return to < o.to || (to == o.to && corner < o.corner); }
     };
+    static constexpr std::size_t kScanned = 16;
     std::vector<std::uint32_t> start;
     std::vector<Out> out;
 
     std::span<const Out> leaving(std::uint32_t u) const { return {out.data() + start[u], out.data() + start[u + 1]}; }
-    // The corners from u to v, by increasing corner.
-    std::span<const Out> from_to(std::uint32_t u, std::uint32_t v) const {
+    // How many corners go from u to v; the first two of them (any order) in `found`.
+    std::size_t count(std::uint32_t u, std::uint32_t v, std::uint32_t (&found)[2]) const {
         const auto l = leaving(u);
+        std::size_t n = 0;
+        if (l.size() <= kScanned) {
+            for (const Out& o : l)
+                if (o.to == v && n++ < 2) found[n - 1] = o.corner;
+            return n;
+        }
         const auto first = std::lower_bound(l.begin(), l.end(), Out{v, 0});
         const auto last = std::lower_bound(first, l.end(), Out{v + 1, 0});  // v + 1: v < n_vertices, no overflow
-        return {first, last};
+        for (auto it = first; it != last && n < 2; ++it) found[n++] = it->corner;
+        return static_cast<std::size_t>(last - first);
     }
 };
 
@@ -40,7 +49,7 @@ std::uint32_t corner_target(const PolygonSoup& soup, std::size_t f, std::size_t 
 }
 
 // Bucket the corners by start vertex: count, prefix sum (start[u] = the end of u's bucket), fill each bucket
-// from its end (start[u] moves back to its beginning: no second array); then sort each bucket
+// from its end (start[u] moves back to its beginning: no second array); then sort the long buckets
 // (O(#corners log valence)).
 DirectedEdges bucket_by_start(const PolygonSoup& soup) {
     DirectedEdges d;
@@ -51,15 +60,9 @@ DirectedEdges bucket_by_start(const PolygonSoup& soup) {
     for (std::size_t f = 0; f < soup.n_faces(); ++f)
         for (std::size_t k = soup.offsets[f]; k < soup.offsets[f + 1]; ++k)
             d.out[--d.start[soup.indices[k]]] = {corner_target(soup, f, k), static_cast<std::uint32_t>(k)};
-    for (std::size_t v = 0; v < soup.n_vertices(); ++v) {
-        const auto first = d.out.begin() + d.start[v], last = d.out.begin() + d.start[v + 1];
-        if (last - first <= 16) {  // typical valences: insertion sort beats std::sort's set-up
-            for (auto i = first; i != last; ++i)
-                for (auto j = i; j != first && *j < *(j - 1); --j) std::iter_swap(j, j - 1);
-        } else {
-            std::sort(first, last);
-        }
-    }
+    for (std::size_t v = 0; v < soup.n_vertices(); ++v)
+        if (d.start[v + 1] - d.start[v] > DirectedEdges::kScanned)
+            std::sort(d.out.begin() + d.start[v], d.out.begin() + d.start[v + 1]);
     return d;
 }
 
@@ -72,8 +75,10 @@ std::size_t face_of_corner(const PolygonSoup& soup, std::uint32_t k) {
 [[noreturn]] void throw_complex_edge(const PolygonSoup& soup, const DirectedEdges& d, std::uint32_t u,
                                      std::uint32_t v) {
     std::vector<std::size_t> faces;
-    for (auto o : d.from_to(u, v)) faces.push_back(face_of_corner(soup, o.corner));
-    for (auto o : d.from_to(v, u)) faces.push_back(face_of_corner(soup, o.corner));
+    for (auto o : d.leaving(u))
+        if (o.to == v) faces.push_back(face_of_corner(soup, o.corner));
+    for (auto o : d.leaving(v))
+        if (o.to == u) faces.push_back(face_of_corner(soup, o.corner));
     std::sort(faces.begin(), faces.end());
     std::string list;
     for (std::size_t i = 0; i < faces.size(); ++i) list += (i ? ", face " : "face ") + std::to_string(faces[i]);
@@ -100,13 +105,14 @@ std::size_t face_of_corner(const PolygonSoup& soup, std::uint32_t k) {
 // Throws if the edge has 3+ faces or is used twice in the same direction.
 std::uint32_t find_twin_corner(const PolygonSoup& soup, const DirectedEdges& d, std::uint32_t k, std::uint32_t u,
                                std::uint32_t v) {
-    const auto same = d.from_to(u, v), twin = d.from_to(v, u);  // `same` includes k itself
-    if (same.size() + twin.size() > 2) throw_complex_edge(soup, d, u, v);
-    if (same.size() == 2) {
-        const std::uint32_t other = same[0].corner == k ? same[1].corner : same[0].corner;
+    std::uint32_t same[2], twin[2];
+    const std::size_t n_same = d.count(u, v, same), n_twin = d.count(v, u, twin);  // `same` includes k itself
+    if (n_same + n_twin > 2) throw_complex_edge(soup, d, u, v);
+    if (n_same == 2) {
+        const std::uint32_t other = same[0] == k ? same[1] : same[0];
         throw_orientation(soup, std::min(k, other), std::max(k, other), u, v);
     }
-    return twin.empty() ? invalid_index : twin[0].corner;
+    return n_twin == 0 ? invalid_index : twin[0];
 }
 
 // The half-edge made for each corner, and the boundary half-edge leaving each vertex (if any).
@@ -132,7 +138,9 @@ Sides add_edges(Mesh& mesh, const PolygonSoup& soup, const DirectedEdges& d) {
                 if (const Halfedge b = s.boundary_out[v]; b.is_valid()) {
                     // b = v→w is the twin of the only corner w→v (an earlier boundary edge)
                     const std::uint32_t w = mesh.to_vertex(b).idx;
-                    throw_complex_vertex(v, f, face_of_corner(soup, d.from_to(w, v)[0].corner));
+                    std::uint32_t corner_wv[2];
+                    d.count(w, v, corner_wv);
+                    throw_complex_vertex(v, f, face_of_corner(soup, corner_wv[0]));
                 }
                 s.boundary_out[v] = mesh.twin(h);
             }
