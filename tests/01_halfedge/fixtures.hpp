@@ -192,6 +192,24 @@ inline PolygonSoup disjoint_union(PolygonSoup a, const PolygonSoup& b, const glm
 // Two tori side by side (torus(8, 6) and torus(7, 5), shifted by 5 along x): genus 2.
 inline PolygonSoup two_tori() { return disjoint_union(fx::torus(8, 6), fx::torus(7, 5), {5, 0, 0}); }
 
+// A closed double cone over an n-gon: ring vertices 0..n-1, apices n (top) and n + 1 (bottom). Each apex has n
+// corners (more than a short scan of its edges: build_mesh's sorted long-bucket path) and is not vertex 0; face 0
+// starts at the top apex, so corner 0 lies in the apex's bucket. Face i < n is (n, i+1, i+2), face n + i is
+// (n+1, i+2, i+1), indices mod n. V = n + 2, E = 3n, F = 2n.
+inline PolygonSoup apex_first_bipyramid(int n) {
+    PolygonSoup s;
+    for (int i = 0; i < n; ++i) {
+        const double a = 2.0 * 3.14159265358979323846 * i / n;
+        s.positions.push_back({std::cos(a), std::sin(a), 0.0});
+    }
+    s.positions.push_back({0.0, 0.0, 1.0});
+    s.positions.push_back({0.0, 0.0, -1.0});
+    const auto u = std::uint32_t(n);
+    for (std::uint32_t i = 0; i < u; ++i) s.add_face({u, (i + 1) % u, (i + 2) % u});
+    for (std::uint32_t i = 0; i < u; ++i) s.add_face({u + 1, (i + 2) % u, (i + 1) % u});
+    return s;
+}
+
 // n tetrahedra in a row, 3 apart: n components, genus 0.
 inline PolygonSoup tetrahedra_in_a_row(int n) {
     PolygonSoup s;

@@ -187,6 +187,15 @@ TEST_SUITE("Task 1: build the mesh") {
         CHECK(contains(msg, "face 0"));
         CHECK(contains(msg, "face 1"));
         CHECK(contains(msg, "face 2"));
+        // the same at a vertex of high valence: a third face on the edge from the top apex (vertex 40) to vertex 1
+        // of apex_first_bipyramid(40), which faces 0 and 39 share
+        PolygonSoup crowded = apex_first_bipyramid(40);
+        crowded.positions.push_back({0.5, 0.5, 0.5});
+        crowded.add_face({1, 40, 42});
+        INFO("bipyramid(40) plus face 80 = (1, 40, 42)");
+        const std::string crowded_msg = build_error_message(crowded);
+        CAPTURE(crowded_msg);
+        CHECK(contains(crowded_msg, "complex edge between vertex 1 and vertex 40: used by face 0, face 39, face 80 "));
     }
 
     TEST_CASE("build_mesh: a flipped face is rejected as inconsistent orientation naming it and its neighbour" *
@@ -209,8 +218,18 @@ TEST_SUITE("Task 1: build the mesh") {
             CHECK(contains(msg, "inconsistent orientation"));
             CHECK(contains(msg, "face " + std::to_string(c.flipped) + " "));
         }
-        // Face 0 flipped: it has the lowest index of the faces on its edges.
-        for (const Case& c : {Case{"tetrahedron with face 0 flipped", fx::flip_face(fx::tetrahedron(), 0), 0},
+        // Face 0 flipped: it has the lowest index of the faces on its edges. The bipyramid's apices have 40 corners
+        // each (not a handful): the flipped faces there disagree at a high-valence vertex.
+        {
+            const PolygonSoup b = apex_first_bipyramid(40);
+            const Mesh m = build_valid(b, "bipyramid(40)");
+            CHECK(m.n_edges() == 120);
+            CHECK(m.n_faces() == 80);
+        }
+        for (const Case& c : {Case{"bipyramid(40) with face 0 flipped", fx::flip_face(apex_first_bipyramid(40), 0), 0},
+                              Case{"bipyramid(40) with face 17 flipped", fx::flip_face(apex_first_bipyramid(40), 17), 17},
+                              Case{"bipyramid(40) with face 63 flipped", fx::flip_face(apex_first_bipyramid(40), 63), 63},
+                              Case{"tetrahedron with face 0 flipped", fx::flip_face(fx::tetrahedron(), 0), 0},
                               Case{"cube (quads) with face 0 flipped", fx::flip_face(fx::cube(false), 0), 0},
                               Case{"icosphere(1) with face 0 flipped", fx::flip_face(fx::icosphere(1), 0), 0},
                               Case{"grid(3 x 3) with face 0 flipped", fx::flip_face(fx::grid(3, 3), 0), 0},

@@ -27,18 +27,23 @@ struct DirectedEdges {
     std::vector<Out> out;
 
     std::span<const Out> leaving(std::uint32_t u) const { return {out.data() + start[u], out.data() + start[u + 1]}; }
-    // How many corners go from u to v; the first two of them (any order) in `found`.
-    std::size_t count(std::uint32_t u, std::uint32_t v, std::uint32_t (&found)[2]) const {
+    // How many corners go from u to v; `other` is one of them that is not corner `skip` (invalid_index if none).
+    std::size_t count(std::uint32_t u, std::uint32_t v, std::uint32_t skip, std::uint32_t& other) const {
         const auto l = leaving(u);
-        std::size_t n = 0;
+        other = invalid_index;
         if (l.size() <= kScanned) {
+            std::size_t n = 0;
             for (const Out& o : l)
-                if (o.to == v && n++ < 2) found[n - 1] = o.corner;
+                if (o.to == v) {
+                    ++n;
+                    if (o.corner != skip) other = o.corner;
+                }
             return n;
         }
         const auto first = std::lower_bound(l.begin(), l.end(), Out{v, 0});
         const auto last = std::lower_bound(first, l.end(), Out{v + 1, 0});  // v + 1: v < n_vertices, no overflow
-        for (auto it = first; it != last && n < 2; ++it) found[n++] = it->corner;
+        for (auto it = first; it != last && other == invalid_index; ++it)
+            if (it->corner != skip) other = it->corner;
         return static_cast<std::size_t>(last - first);
     }
 };
@@ -105,14 +110,11 @@ std::size_t face_of_corner(const PolygonSoup& soup, std::uint32_t k) {
 // Throws if the edge has 3+ faces or is used twice in the same direction.
 std::uint32_t find_twin_corner(const PolygonSoup& soup, const DirectedEdges& d, std::uint32_t k, std::uint32_t u,
                                std::uint32_t v) {
-    std::uint32_t same[2], twin[2];
-    const std::size_t n_same = d.count(u, v, same), n_twin = d.count(v, u, twin);  // `same` includes k itself
+    std::uint32_t other, twin;
+    const std::size_t n_same = d.count(u, v, k, other), n_twin = d.count(v, u, invalid_index, twin);  // k counts
     if (n_same + n_twin > 2) throw_complex_edge(soup, d, u, v);
-    if (n_same == 2) {
-        const std::uint32_t other = same[0] == k ? same[1] : same[0];
-        throw_orientation(soup, std::min(k, other), std::max(k, other), u, v);
-    }
-    return n_twin == 0 ? invalid_index : twin[0];
+    if (n_same == 2) throw_orientation(soup, std::min(k, other), std::max(k, other), u, v);
+    return twin;  // invalid_index when there is none
 }
 
 // The half-edge made for each corner, and the boundary half-edge leaving each vertex (if any).
@@ -138,9 +140,9 @@ Sides add_edges(Mesh& mesh, const PolygonSoup& soup, const DirectedEdges& d) {
                 if (const Halfedge b = s.boundary_out[v]; b.is_valid()) {
                     // b = v→w is the twin of the only corner w→v (an earlier boundary edge)
                     const std::uint32_t w = mesh.to_vertex(b).idx;
-                    std::uint32_t corner_wv[2];
-                    d.count(w, v, corner_wv);
-                    throw_complex_vertex(v, f, face_of_corner(soup, corner_wv[0]));
+                    std::uint32_t corner_wv;
+                    d.count(w, v, invalid_index, corner_wv);
+                    throw_complex_vertex(v, f, face_of_corner(soup, corner_wv));
                 }
                 s.boundary_out[v] = mesh.twin(h);
             }
