@@ -150,6 +150,37 @@ TEST_SUITE("Task 5: superquadrics") {
             }
         }
         CHECK_FALSE(intersect_superquadric({{1, 1, 1}, 1, 1}, {{0, 0, -5}, {0, 0, 1}}, 0, 3.5).has_value());
+        {  // a window [4, 4] holding the crossing point itself; [5, 5] holds none (and neither throws)
+            const auto at4 = intersect_superquadric({{1, 1, 1}, 1, 1}, {{0, 0, -5}, {0, 0, 1}}, 4, 4);
+            CHECK_MESSAGE((at4.has_value() && close(at4->t, 4.0, 1e-9)),
+                          "unit sphere, ray (0,0,-5) + t (0,0,1), t in [4, 4]: the ray is on the surface at t = 4");
+            CHECK_FALSE(intersect_superquadric({{1, 1, 1}, 1, 1}, {{0, 0, -5}, {0, 0, 1}}, 5, 5).has_value());
+        }
+        {  // leaving from just inside: the crossing is at the very end of the clipped interval
+            const auto out = intersect_superquadric({{1, 1, 1}, 1, 1}, {{1 - 1e-4, 0, 0}, {1, 0, 0}}, 0, inf);
+            INFO("unit sphere, ray (1 - 1e-4, 0, 0) + t (1, 0, 0): leaves at t = 1e-4; got "
+                 << (out ? "t = " + std::to_string(out->t) : std::string("no hit")));
+            REQUIRE(out.has_value());
+            CHECK(close(out->t, 1e-4, 1e-9, 1e-4));
+        }
+        {  // a short chord (0.089 long) seen from 500 away: bracket on the clipped interval, not from the origin
+            const double off = 0.999;
+            const auto far = intersect_superquadric({{1, 1, 1}, 1, 1}, {{0, off, -500}, {0, 0, 1}}, 0, inf);
+            const double want = double(500 - std::sqrt(1 - LD(off) * off));
+            INFO("unit sphere, ray (0, 0.999, -500) + t (0, 0, 1): enters at t = " << want << ", got "
+                 << (far ? "t = " + std::to_string(far->t) : std::string("no hit")));
+            REQUIRE(far.has_value());
+            CHECK(close(far->t, want, 1e-9));
+        }
+        for (auto [e1, e2] : {std::pair{2.0, 1.0}, std::pair{3.0, 0.5}, std::pair{1.0, 1.0}}) {  // the poles' normals
+            const Superquadric s{{1.2, 0.7, 0.9}, e1, e2};
+            const auto top = intersect_superquadric(s, {{0, 0, 4}, {0, 0, -1}}, 0, inf);
+            INFO(str(s) << ", ray down the z axis: the hit is the north pole (0, 0, 0.9) with normal (0, 0, 1); got "
+                        << (top ? "normal " + str(top->normal) : std::string("no hit")));
+            REQUIRE(top.has_value());
+            CHECK(close(top->t, 3.1, 1e-9));
+            CHECK(glm::length(top->normal - glm::dvec3(0, 0, 1)) <= 1e-9);
+        }
         CHECK_THROWS_AS(intersect_superquadric({{1, 1, 1}, 1, 1}, {{0, 0, -5}, {0, 0, 0}}, 0, 1), std::invalid_argument);
         Rng rng(54);
         for (int n = 0; n < 40; ++n) {

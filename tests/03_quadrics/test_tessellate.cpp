@@ -23,6 +23,19 @@ TEST_SUITE("Task 6: tessellation") {
             CHECK(glm::length(m.positions[0] - glm::dvec3(0, 0, -1.1)) <= 1e-12);
             CHECK(glm::length(m.positions[1] - glm::dvec3(0, 0, 1.1)) <= 1e-12);
             for (const auto& p : m.positions) CHECK(close(double(F_ld(s, p)), 1.0, 1e-9));
+            // ring i at η = −π/2 + iπ/n_eta, vertex j at ω = −π + 2πj/n_omega (the contract's grid), written out here
+            const auto sp = [](LD x, LD e) { return x == 0 ? LD(0) : (x < 0 ? -1 : 1) * std::pow(std::abs(x), e); };
+            for (int i = 1; i < ne; ++i)
+                for (int j = 0; j < no; ++j) {
+                    const LD eta = -LD(pi) / 2 + LD(pi) * i / ne, om = -LD(pi) + 2 * LD(pi) * j / no;
+                    const glm::dvec3 want{double(1.5L * sp(std::cos(eta), e1) * sp(std::cos(om), e2)),
+                                          double(0.7L * sp(std::cos(eta), e1) * sp(std::sin(om), e2)),
+                                          double(1.1L * sp(std::sin(eta), e1))};
+                    const glm::dvec3 got = m.positions[2 + (i - 1) * no + j];
+                    CHECK_MESSAGE(glm::length(got - want) <= 1e-9, "vertex " << 2 + (i - 1) * no + j << " (ring " << i
+                                                                             << ", j = " << j << ") should be " << str(want)
+                                                                             << ", got " << str(got));
+                }
             CHECK_MESSAGE(signed_volume(m) > 0, "the enclosed signed volume is " << double(signed_volume(m))
                                                                                  << ": the faces point inwards");
         }
