@@ -59,8 +59,9 @@ TEST_SUITE("Task 4: rays") {
         check_roots(0, 0, 0, 0, 0, 0);
         // Δ = β² − 4αγ counts as 0 when |Δ| <= 1e-12 (β² + 4|αγ|): here β² + 4|αγ| = 8 (about), Δ = −4δ
         check_roots(1, 2, 1 + 1e-13, 1, -1, -1);    // Δ = −4e-13: within the tolerance, a double root
-        check_roots(1, 2, 1 + 1.5e-12, 1, -1, -1);  // Δ = −6e-12 <= 8e-12: still a double root
-        check_roots(1, 2, 1 + 3e-12, 0, 0, 0);      // Δ = −1.2e-11 > 8e-12: no root
+        check_roots(1, 2, 1 + 1.9e-12, 1, -1, -1);  // Δ = −7.6e-12 <= 8e-12: still a double root
+        check_roots(1, 2, 1 + 2.1e-12, 0, 0, 0);    // Δ = −8.4e-12 > 8e-12: no root
+        check_roots(2, 0, 0, 1, 0, 0);              // Δ = 0 and the tolerance 0: the double root t = 0
         check_roots(1, 2, 1 + 1e-9, 0, 0, 0);
         check_roots(-3, 6, -3 * (1 - 1e-13), 1, 1, 1);  // the same with α < 0 and Δ > 0 within the tolerance
     }
@@ -168,7 +169,9 @@ TEST_SUITE("Task 4: rays") {
                            C{{{-5, 0, 3}, {1, 0, 0}}, {}, "z = 3 is outside the box for the whole ray"},
                            C{{{0, 0, 0}, {2, 0, 0}}, {0.5}, "from inside the box, direction length 2: t = 0.5"},
                            C{{{-5, -2, 0}, {1, 0, 0}}, {4, 6}, "along the box's face y = -2 (the box is closed)"},
-                           C{{{-5, 0, 2}, {1, 0, 0}}, {4, 6}, "along the box's face z = 2 (the box is closed)"}}) {
+                           C{{{-5, 0, 2}, {1, 0, 0}}, {4, 6}, "along the box's face z = 2 (the box is closed)"},
+                           C{{{-5, -2, 0}, {1, -0.0, 0}}, {4, 6}, "along the face y = -2, direction y = -0.0"},
+                           C{{{-5, 2, 0}, {1, -0.0, 0}}, {4, 6}, "along the face y = 2, direction y = -0.0"}}) {
             const auto got = ts(intersect_in_box(planes, c.ray, box));
             INFO("x² = 1 in the box [-2, 2]³, " << c.what << ", " << str(c.ray) << ": expected " << c.want.size()
                                                   << " hits, got " << got.size());

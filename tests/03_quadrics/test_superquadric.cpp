@@ -172,6 +172,14 @@ TEST_SUITE("Task 5: superquadrics") {
             REQUIRE(far.has_value());
             CHECK(close(far->t, want, 1e-9));
         }
+        {  // from (1, 1, 0), where F = 2 exactly, towards the centre
+            const auto in = intersect_superquadric({{1, 1, 1}, 1, 1}, {{1, 1, 0}, {-1, -1, 0}}, 0, inf);
+            const double want = 1 - std::sqrt(0.5);
+            INFO("unit sphere, ray (1, 1, 0) + t (-1, -1, 0): enters at t = " << want << ", got "
+                 << (in ? "t = " + std::to_string(in->t) : std::string("no hit")));
+            REQUIRE(in.has_value());
+            CHECK(close(in->t, want, 1e-9));
+        }
         for (auto [e1, e2] : {std::pair{2.0, 1.0}, std::pair{3.0, 0.5}, std::pair{1.0, 1.0}}) {  // the poles' normals
             const Superquadric s{{1.2, 0.7, 0.9}, e1, e2};
             const auto top = intersect_superquadric(s, {{0, 0, 4}, {0, 0, -1}}, 0, inf);

@@ -104,6 +104,21 @@ TEST_SUITE("Task 6: tessellation") {
             CHECK_MESSAGE((v > 0 && std::abs(v - exact) / exact < 0.01),
                           "mesh volume " << v << ", exact " << exact << " (negative: the faces point inwards)");
         }
+        // A singular for the rank tolerance (|λ| <= 1e-9 max |λ|, as classify): a cylinder, not an ellipsoid
+        for (int axis = 0; axis < 3; ++axis)
+            for (double k : {1.0, 1e3}) {
+                glm::dmat4 Q(0.0);
+                Q[0][0] = Q[1][1] = Q[2][2] = k;
+                Q[3][3] = -k;
+                Q[axis][axis] = 0.5e-9 * k;
+                INFO("x² + y² + z² = 1 with axis " << axis << " scaled by 0.5e-9 (times " << k
+                                                   << "): a real elliptic cylinder for the rank tolerance");
+                CHECK_THROWS_AS(tessellate_ellipsoid(Q, 8, 8), std::invalid_argument);
+                Q[axis][axis] = 1e-9 * k;  // |λ| = 1e-9 max |λ| still counts as zero
+                CHECK_THROWS_AS(tessellate_ellipsoid(Q, 8, 8), std::invalid_argument);
+                Q[axis][axis] = 2e-9 * k;  // above the tolerance: a (very long) real ellipsoid
+                CHECK_NOTHROW(tessellate_ellipsoid(Q, 8, 8));
+            }
         for (QuadricType t : {QuadricType::imaginary_ellipsoid, QuadricType::hyperboloid_one_sheet,
                               QuadricType::elliptic_paraboloid, QuadricType::imaginary_cone}) {
             INFO(type_name(t) << " is not a real ellipsoid");

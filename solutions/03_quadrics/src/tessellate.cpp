@@ -53,13 +53,12 @@ PolygonSoup tessellate_superquadric(const Superquadric& s, int n_eta, int n_omeg
 PolygonSoup tessellate_ellipsoid(const glm::dmat4& Q, int n_eta, int n_omega) {
     // BEGIN SOLUTION
     check_grid(n_eta, n_omega, "tessellate_ellipsoid");
-    glm::dmat3 A;
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) A[i][j] = 0.5 * (Q[i][j] + Q[j][i]);
+    const glm::dmat3 A(Q);  // the upper-left 3×3 (Q is symmetric)
     const glm::dvec3 b{Q[3][0], Q[3][1], Q[3][2]};
     const SymmetricEigen e = symmetric_eigen(Q, 3);
     const glm::dvec3 ev{e.values[0], e.values[1], e.values[2]};
-    glm::dmat3 V{glm::dvec3(e.vectors[0]), glm::dvec3(e.vectors[1]), glm::dvec3(e.vectors[2])};  // columns
+    // the eigenvectors as columns: a rotation (det +1), so the frame is right-handed and the mesh stays outward
+    const glm::dmat3 V{glm::dvec3(e.vectors[0]), glm::dvec3(e.vectors[1]), glm::dvec3(e.vectors[2])};
     const double big = std::max({std::abs(ev.x), std::abs(ev.y), std::abs(ev.z)});
     for (int i = 0; i < 3; ++i)
         if (!(std::abs(ev[i]) > 1e-9 * big))
@@ -73,7 +72,6 @@ PolygonSoup tessellate_ellipsoid(const glm::dmat4& Q, int n_eta, int n_omega) {
         if (!(r2 > 0)) throw std::invalid_argument("tessellate_ellipsoid: Q is not a real ellipsoid");
         radius[i] = std::sqrt(r2);
     }
-    if (glm::determinant(V) < 0) V[2] = -V[2];  // a right-handed frame keeps the orientation
     PolygonSoup soup;
     const double pi = std::numbers::pi;
     auto place = [&](double eta, double omega) {

@@ -100,6 +100,7 @@ QuadricType classify(const glm::dmat4& Q);
 
 //! The eigen-decomposition of a symmetric n×n block (given; the lab is about what the eigenvalues say, not how to
 //! compute them): values[i] is an eigenvalue with the unit eigenvector vectors[i] (entries n..3 are 0); unsorted.
+//! The vectors are the columns of a product of plane rotations: orthonormal, with determinant +1.
 struct SymmetricEigen {
     double values[4] = {0, 0, 0, 0};
     glm::dvec4 vectors[4] = {};
@@ -195,8 +196,10 @@ double superquadric_volume(const Superquadric& s);
 
 //! The first crossing of the ray with the surface F = 1 for t in [t_min, t_max] (entering or leaving), by a safe
 //! root finder on the inside–outside function (handout §7: clip to the bounding box, bracket a sign change of
-//! F^(ε₁/2) − 1 along the ray, then bisect or Brent): the returned t is within 1e-9 · (1 + |t|) of the true
-//! crossing. Rays that only graze the surface (touch without crossing) may be reported or not.
+//! F − 1 along the ray in steps of at most 1/1000 of the clipped interval, then bisect; F^(ε₁/2) − 1 has the same
+//! signs and grows like a distance, better for Brent): the returned t is within 1e-9 · (1 + |t|) of the true
+//! crossing. Rays that only graze the surface (touch without crossing) may be reported or not; a ray starting on
+//! the surface (F = 1 at t_min) hits at t_min.
 //! nullopt when there is no crossing. \throw std::invalid_argument when direction is zero or t_min > t_max.
 std::optional<Hit> intersect_superquadric(const Superquadric& s, const Ray& ray, double t_min, double t_max);
 
@@ -213,7 +216,8 @@ PolygonSoup tessellate_superquadric(const Superquadric& s, int n_eta, int n_omeg
 //! The same mesh for a real ellipsoid given by Q (any centre and orientation): vertex for (η, ω) is
 //! centre + Σ rᵢ uᵢ · (unit sphere point at (η, ω)), with uᵢ the eigenvectors of A (a right-handed frame) and rᵢ
 //! the semi-axes; every vertex satisfies XᵀQX = 0 to rounding, the mesh is closed and outward.
-//! \throw std::invalid_argument when Q is not a real ellipsoid, or on bad n_eta, n_omega.
+//! \throw std::invalid_argument when Q is not a real ellipsoid (an eigenvalue of A with |λ| ≤ 1e-9 · max |λ| is
+//!        zero, as in classify), or on bad n_eta, n_omega.
 PolygonSoup tessellate_ellipsoid(const glm::dmat4& Q, int n_eta, int n_omega);
 
 // ==== Task 7: images (handout §9) =============================================================================
