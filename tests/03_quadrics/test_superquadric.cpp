@@ -172,6 +172,15 @@ TEST_SUITE("Task 5: superquadrics") {
             REQUIRE(far.has_value());
             CHECK(close(far->t, want, 1e-9));
         }
+        {  // a sample of the march lands exactly on the surface (g = 0) and the next one is inside: the crossing is
+           // there (radius 2^20, origin 2^-12 above the pole, t in [0, 0.25]: samples at t = k 2^-12)
+            const double r = 1048576.0;
+            const auto on = intersect_superquadric({{r, r, r}, 1, 1}, {{0, 0, r + 0x1p-12}, {0, 0, -1}}, 0, 0.25);
+            INFO("sphere of radius 2^20, ray (0, 0, 2^20 + 2^-12) + t (0, 0, -1), t in [0, 0.25]: enters at t = 2^-12; got "
+                 << (on ? "t = " + std::to_string(on->t) : std::string("no hit")));
+            REQUIRE(on.has_value());
+            CHECK(close(on->t, 0x1p-12, 1e-9, 1.0));
+        }
         {  // from (1, 1, 0), where F = 2 exactly, towards the centre
             const auto in = intersect_superquadric({{1, 1, 1}, 1, 1}, {{1, 1, 0}, {-1, -1, 0}}, 0, inf);
             const double want = 1 - std::sqrt(0.5);
