@@ -253,11 +253,11 @@ q::PinholeCamera figure_camera(double extent) {
 std::string imaginary_note(q::QuadricType t) {
     using T = q::QuadricType;
     switch (t) {
-        case T::imaginary_ellipsoid: return "no real point: x²+y²+z² = -1";
+        case T::imaginary_ellipsoid: return "no real point: x^2 + y^2 + z^2 = -1";
         case T::imaginary_cone: return "one real point: the origin";
-        case T::imaginary_elliptic_cylinder: return "no real point: x²+y² = -1";
+        case T::imaginary_elliptic_cylinder: return "no real point: x^2 + y^2 = -1";
         case T::imaginary_intersecting_planes: return "one real line: the z axis";
-        case T::imaginary_parallel_planes: return "no real point: x² = -1";
+        case T::imaginary_parallel_planes: return "no real point: x^2 = -1";
         case T::coincident_planes: return "a double plane: the gradient is 0 on it,\nso the normal (the shading) is rounding noise";
         default: return "";
     }
