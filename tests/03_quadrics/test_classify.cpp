@@ -21,7 +21,7 @@ void expect_type(const glm::dmat4& Q, QuadricType want, const std::string& what)
 }  // namespace
 
 TEST_SUITE("Task 3: classification") {
-    TEST_CASE("classify: the canonical form of each of the 17 types" * geolab::points(4) *
+    TEST_CASE("classify: the canonical form of each of the 17 types" * geolab::points(3) *
               geolab::hint("Decide by r3 = rank A, r4 = rank Q, whether A's non-zero eigenvalues agree in sign, and the "
                            "signs of Q's eigenvalues (handout §5's decision tree).")) {
         for (int i = 0; i < n_types; ++i) {
@@ -49,7 +49,7 @@ TEST_SUITE("Task 3: classification") {
                            "positive vs negative, up to swapping), never a sign itself.")) {
         Rng rng(32);
         for (int i = 0; i < n_types; ++i)
-            for (double k : {-1.0, -3.5, -0.01, 250.0, -1e4}) {
+            for (double k : {-1.0, -3.5, -0.01, 250.0, -1e4, 1e-15, -1e15}) {
                 const Mat4L M = similarity(rng, 1.0, 1.0);
                 const Mat4L Q = moved(canonical(type_at(i), 1.2, 0.7, 1.9), M) * LD(k);
                 expect_type(to_glm(Q), type_at(i), "canonical moved and multiplied by " + std::to_string(k));
@@ -97,5 +97,29 @@ TEST_SUITE("Task 3: classification") {
         }
         expect_type(to_glm(canonical(QuadricType::real_ellipsoid, 1, 1, 1)), QuadricType::real_ellipsoid,
                     "unit sphere after the rejected inputs");
+        for (int c = 0; c < 4; ++c)  // a NaN at every position
+            for (int r = 0; r < 4; ++r) {
+                glm::dmat4 bad = to_glm(canonical(QuadricType::hyperboloid_one_sheet, 1, 2, 3));
+                bad[c][r] = std::nan("");
+                INFO("a NaN at [" << c << "][" << r << "] must be rejected");
+                CHECK_THROWS_AS(classify(bad), std::invalid_argument);
+            }
+    }
+
+    TEST_CASE("classify: the rank tolerance is 1e-9 of the largest |eigenvalue|; exactly" * geolab::points(1) *
+              geolab::hint("An eigenvalue counts as zero when |λ| <= 1e-9 · max |λ| of the same matrix (A for r3, Q for "
+                           "r4): 1.5e-9 counts, 0.5e-9 does not, at any overall scale of Q.")) {
+        using T = QuadricType;
+        for (double k : {1.0, 1e-12, 1e9}) {
+            glm::dmat4 Q(0.0);  // x² + y² + λ z² = 1, scaled by k
+            Q[0][0] = Q[1][1] = k;
+            Q[3][3] = -k;
+            Q[2][2] = 1.5e-9 * k;
+            expect_type(Q, T::real_ellipsoid, "x² + y² + 1.5e-9 z² = 1 (times " + std::to_string(k) + ")");
+            Q[2][2] = 0.5e-9 * k;
+            expect_type(Q, T::real_elliptic_cylinder, "x² + y² + 0.5e-9 z² = 1 (times " + std::to_string(k) + ")");
+            Q[2][2] = -1.5e-9 * k;
+            expect_type(Q, T::hyperboloid_one_sheet, "x² + y² − 1.5e-9 z² = 1 (times " + std::to_string(k) + ")");
+        }
     }
 }  // TEST_SUITE

@@ -71,11 +71,14 @@ TEST_SUITE("Task 1: the matrix form") {
         CHECK(got.r == 3);
         CHECK(got.g == 0);
         CHECK(got.p == 0);
-        glm::dmat4 bad = matrix_of(random_coefficients(rng));
-        bad[2][1] = std::nan("");
-        CHECK_THROWS_AS(to_coefficients(bad), std::invalid_argument);
-        bad[2][1] = INFINITY;
-        CHECK_THROWS_AS(to_coefficients(bad), std::invalid_argument);
+        for (int c = 0; c < 4; ++c)  // a NaN or an infinity at every position, diagonal and off-diagonal
+            for (int r = 0; r < 4; ++r)
+                for (double v : {std::nan(""), double(INFINITY), -double(INFINITY)}) {
+                    glm::dmat4 bad = matrix_of(random_coefficients(rng));
+                    bad[c][r] = v;
+                    INFO("Q[" << c << "][" << r << "] = " << v << " must be rejected with std::invalid_argument");
+                    CHECK_THROWS_AS(to_coefficients(bad), std::invalid_argument);
+                }
     }
 
     TEST_CASE("matrix form: evaluate is the lecture's polynomial at any point" * geolab::points(2) *

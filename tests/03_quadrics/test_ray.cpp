@@ -57,6 +57,13 @@ TEST_SUITE("Task 4: rays") {
         check_roots(0, -4, -2, 1, -0.5, -0.5);
         check_roots(0, 0, 1, 0, 0, 0);
         check_roots(0, 0, 0, 0, 0, 0);
+        // Δ = β² − 4αγ counts as 0 when |Δ| <= 1e-12 (β² + 4|αγ|): here β² + 4|αγ| = 8 (about), Δ = −4δ
+        check_roots(1, 2, 1 + 1e-13, 1, -1, -1);    // Δ = −4e-13: within the tolerance, a double root
+        check_roots(1, 2, 1 + 1.9e-12, 1, -1, -1);  // Δ = −7.6e-12 <= 8e-12: still a double root
+        check_roots(1, 2, 1 + 2.1e-12, 0, 0, 0);    // Δ = −8.4e-12 > 8e-12: no root
+        check_roots(2, 0, 0, 1, 0, 0);              // Δ = 0 and the tolerance 0: the double root t = 0
+        check_roots(1, 2, 1 + 1e-9, 0, 0, 0);
+        check_roots(-3, 6, -3 * (1 - 1e-13), 1, 1, 1);  // the same with α < 0 and Δ > 0 within the tolerance
     }
 
     TEST_CASE("rays: solve_quadratic keeps the small root when β² ≫ 4αγ (no cancellation)" * geolab::points(3) *
@@ -100,8 +107,18 @@ TEST_SUITE("Task 4: rays") {
         check_hits(-1.0 * S, {{1, 2, -3}, {0, 0, 1}}, 0, inf, {4, 8}, "−(sphere): same hits, normals inward (gradient)");
         check_hits(to_glm(canonical(QuadricType::hyperboloid_one_sheet, 1, 1, 1)), {{-3, 0, 0}, {1, 0, 0}}, 0, inf,
                    {2, 4}, "x² + y² − z² = 1");
+        check_hits(S, {{1, 2, -3}, {0, 0, 1}}, 4, 4, {4}, "sphere centre (1,2,3) radius 2, window [4, 4] at the root");
+        check_hits(S, {{1, 2, -3}, {0, 0, 1}}, 5, 5, {}, "sphere centre (1,2,3) radius 2, window [5, 5]");
         CHECK_THROWS_AS(intersect(S, {{0, 0, 0}, {0, 0, 0}}, 0, 1), std::invalid_argument);
         CHECK_THROWS_AS(intersect(S, {{0, 0, 0}, {0, 0, 1}}, 2, 1), std::invalid_argument);
+        // through a cone's apex: XᵀQX has a double root there and the gradient is zero: normal (0, 0, 0)
+        const glm::dmat4 K = to_glm(canonical(QuadricType::real_cone, 1, 1, 1));
+        const auto apex = intersect(K, {{0, 0, -2}, {0, 0, 1}}, 0, inf);
+        INFO("x² + y² = z² along its axis from (0, 0, -2): one hit at the apex t = 2 with normal (0, 0, 0); got "
+             << apex.size() << " hits" << (apex.empty() ? std::string() : ", normal " + str(apex[0].normal)));
+        REQUIRE(apex.size() == 1);
+        CHECK(apex[0].t == 2.0);
+        CHECK(apex[0].normal == glm::dvec3(0.0));
     }
 
     TEST_CASE("rays: tangent rays give one hit; rays starting on the surface hit at t = 0" * geolab::points(2) *
@@ -149,7 +166,12 @@ TEST_SUITE("Task 4: rays") {
                            C{{{0, 0, 0}, {1, 0, 0}}, {1}, "from inside the box: only t >= 0"},
                            C{{{0, 0, 0}, {-0.5, 0, 0}}, {2}, "from inside the box, backwards, direction length 0.5"},
                            C{{{-5, 0, 0}, {1, 0.5, 0}}, {4}, "the second plane is hit at y = 3, outside the box"},
-                           C{{{-5, 0, 3}, {1, 0, 0}}, {}, "z = 3 is outside the box for the whole ray"}}) {
+                           C{{{-5, 0, 3}, {1, 0, 0}}, {}, "z = 3 is outside the box for the whole ray"},
+                           C{{{0, 0, 0}, {2, 0, 0}}, {0.5}, "from inside the box, direction length 2: t = 0.5"},
+                           C{{{-5, -2, 0}, {1, 0, 0}}, {4, 6}, "along the box's face y = -2 (the box is closed)"},
+                           C{{{-5, 0, 2}, {1, 0, 0}}, {4, 6}, "along the box's face z = 2 (the box is closed)"},
+                           C{{{-5, -2, 0}, {1, -0.0, 0}}, {4, 6}, "along the face y = -2, direction y = -0.0"},
+                           C{{{-5, 2, 0}, {1, -0.0, 0}}, {4, 6}, "along the face y = 2, direction y = -0.0"}}) {
             const auto got = ts(intersect_in_box(planes, c.ray, box));
             INFO("x² = 1 in the box [-2, 2]³, " << c.what << ", " << str(c.ray) << ": expected " << c.want.size()
                                                   << " hits, got " << got.size());
@@ -161,5 +183,16 @@ TEST_SUITE("Task 4: rays") {
         INFO("x² − y² = 1 at x = −1.5 meets y = ±√1.25 = ±1.118, both outside |y| <= 1: got " << got.size() << " hits");
         CHECK(got.empty());
         CHECK_THROWS_AS(intersect_in_box(planes, {{0, 0, 0}, {1, 0, 0}}, {{1, -1, -1}, {-1, 1, 1}}), std::invalid_argument);
+        // a flat box (lo.z = hi.z) is a box: the ray in its plane sees the planes x = ±1
+        const auto flat = ts(intersect_in_box(planes, {{-5, 0, 0}, {1, 0, 0}}, {{-2, -2, 0}, {2, 2, 0}}));
+        CHECK_MESSAGE(flat.size() == 2, "x² = 1 in the flat box [-2, 2]² × [0, 0], ray along x in z = 0: expected 2 hits, got "
+                                            << flat.size());
+        // a ray that meets the box in one point (its edge y = z = 2) where the sphere |x| = 3 touches it
+        const glm::dmat4 S3 = sphere({0, 0, 0}, 3);
+        const auto touch = ts(intersect_in_box(S3, {{1, 3, 1}, {0, -1, 1}}, box));
+        INFO("|x| = 3 and the ray (1, 3, 1) + t (0, -1, 1): tangent at (1, 2, 2) at t = 1, the one point of the ray in "
+             "the box [-2, 2]³: expected 1 hit, got " << touch.size());
+        REQUIRE(touch.size() == 1);
+        CHECK(touch[0] == 1.0);
     }
 }  // TEST_SUITE

@@ -12,7 +12,7 @@ int check_sphere_image(const geolab::render::Image& img, const PinholeCamera& ca
                     what << ": expected a " << w << "x" << h << " image, got " << img.width << "x" << img.height
                          << " with " << img.rgba.size() << " bytes");
     const glm::dvec3 l = glm::normalize(light);
-    int hits = 0, bad = 0;
+    int hits = 0, bad = 0, exact = 0;
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
             const Ray ray = cam.ray(x, y, w, h);
@@ -28,11 +28,15 @@ int check_sphere_image(const geolab::render::Image& img, const PinholeCamera& ca
                 ++hits;
             }
             const auto px = img.pixel(x, y);
+            if (want > 0 && int(px[0]) == want) ++exact;
             if ((std::abs(int(px[0]) - want) > 1 || px[1] != px[0] || px[2] != px[0] || px[3] != 255) && bad++ < 5)
                 FAIL_CHECK(what << ": pixel (" << x << ", " << y << ") should be gray " << want << " with alpha 255, got ("
                                 << int(px[0]) << ", " << int(px[1]) << ", " << int(px[2]) << ", " << int(px[3]) << ")");
         }
     CHECK_MESSAGE(bad == 0, what << ": " << bad << " pixels differ");
+    // ±1 is allowed for rounding at .5; most pixels must be exactly round(255 v)
+    CHECK_MESSAGE(exact >= 0.8 * hits, what << ": only " << exact << " of " << hits
+                                            << " lit pixels are exactly round(255 v): scale by 255, round to nearest");
     return hits;
 }
 }  // namespace
@@ -50,6 +54,15 @@ TEST_SUITE("Task 7: images") {
         const int hits = check_sphere_image(img, cam, {0.2, -0.1, 0}, 1.1, scene.light, 40, 30, "quadric sphere");
         CHECK(hits > 50);
         CHECK_THROWS_AS(render_lambert(scene, cam, 0, 10), std::invalid_argument);
+        CHECK_THROWS_AS(render_lambert(scene, cam, 10, 0), std::invalid_argument);
+        CHECK_THROWS_AS(render_lambert(scene, cam, -3, 5), std::invalid_argument);
+        const auto one = render_lambert(scene, cam, 1, 1);  // one pixel: the ray through the centre hits the sphere
+        REQUIRE_MESSAGE((one.width == 1 && one.height == 1 && one.rgba.size() == 4u), "a 1x1 image must work");
+        CHECK(one.rgba[0] > 0);
+        const auto row = render_lambert(scene, cam, 7, 1);
+        CHECK((row.width == 7 && row.height == 1));
+        const auto column = render_lambert(scene, cam, 1, 5);
+        CHECK((column.width == 1 && column.height == 5));
     }
 
     TEST_CASE("images: a superquadric (ε = 1: an ellipsoid of equal radii) renders the same sphere" * geolab::points(2) *
@@ -62,5 +75,9 @@ TEST_SUITE("Task 7: images") {
         const auto img = render_lambert(scene, cam, 36, 28);
         const int hits = check_sphere_image(img, cam, {0, 0, 0}, 1.3, scene.light, 36, 28, "superquadric sphere");
         CHECK(hits > 50);
+        // the camera 0.4 from the surface: hits at t < 1 count too (t >= 0)
+        const PinholeCamera near{{0.3, 0.2, 1.7}, {0, 0, 0}, {0, 1, 0}, 60};
+        const auto img2 = render_lambert(scene, near, 24, 18);
+        CHECK(check_sphere_image(img2, near, {0, 0, 0}, 1.3, scene.light, 24, 18, "superquadric sphere, camera close") > 50);
     }
 }  // TEST_SUITE

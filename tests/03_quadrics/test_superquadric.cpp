@@ -150,6 +150,54 @@ TEST_SUITE("Task 5: superquadrics") {
             }
         }
         CHECK_FALSE(intersect_superquadric({{1, 1, 1}, 1, 1}, {{0, 0, -5}, {0, 0, 1}}, 0, 3.5).has_value());
+        {  // a window [4, 4] holding the crossing point itself; [5, 5] holds none (and neither throws)
+            const auto at4 = intersect_superquadric({{1, 1, 1}, 1, 1}, {{0, 0, -5}, {0, 0, 1}}, 4, 4);
+            CHECK_MESSAGE((at4.has_value() && close(at4->t, 4.0, 1e-9)),
+                          "unit sphere, ray (0,0,-5) + t (0,0,1), t in [4, 4]: the ray is on the surface at t = 4");
+            CHECK_FALSE(intersect_superquadric({{1, 1, 1}, 1, 1}, {{0, 0, -5}, {0, 0, 1}}, 5, 5).has_value());
+        }
+        {  // leaving from just inside: the crossing is at the very end of the clipped interval
+            const auto out = intersect_superquadric({{1, 1, 1}, 1, 1}, {{1 - 1e-4, 0, 0}, {1, 0, 0}}, 0, inf);
+            INFO("unit sphere, ray (1 - 1e-4, 0, 0) + t (1, 0, 0): leaves at t = 1e-4; got "
+                 << (out ? "t = " + std::to_string(out->t) : std::string("no hit")));
+            REQUIRE(out.has_value());
+            CHECK(close(out->t, 1e-4, 1e-9, 1e-4));
+        }
+        {  // a short chord (0.089 long) seen from 500 away: bracket on the clipped interval, not from the origin
+            const double off = 0.999;
+            const auto far = intersect_superquadric({{1, 1, 1}, 1, 1}, {{0, off, -500}, {0, 0, 1}}, 0, inf);
+            const double want = double(500 - std::sqrt(1 - LD(off) * off));
+            INFO("unit sphere, ray (0, 0.999, -500) + t (0, 0, 1): enters at t = " << want << ", got "
+                 << (far ? "t = " + std::to_string(far->t) : std::string("no hit")));
+            REQUIRE(far.has_value());
+            CHECK(close(far->t, want, 1e-9));
+        }
+        {  // a sample of the march lands exactly on the surface (g = 0) and the next one is inside: the crossing is
+           // there (radius 2^20, origin 2^-12 above the pole, t in [0, 0.25]: samples at t = k 2^-12)
+            const double r = 1048576.0;
+            const auto on = intersect_superquadric({{r, r, r}, 1, 1}, {{0, 0, r + 0x1p-12}, {0, 0, -1}}, 0, 0.25);
+            INFO("sphere of radius 2^20, ray (0, 0, 2^20 + 2^-12) + t (0, 0, -1), t in [0, 0.25]: enters at t = 2^-12; got "
+                 << (on ? "t = " + std::to_string(on->t) : std::string("no hit")));
+            REQUIRE(on.has_value());
+            CHECK(close(on->t, 0x1p-12, 1e-9, 1.0));
+        }
+        {  // from (1, 1, 0), where F = 2 exactly, towards the centre
+            const auto in = intersect_superquadric({{1, 1, 1}, 1, 1}, {{1, 1, 0}, {-1, -1, 0}}, 0, inf);
+            const double want = 1 - std::sqrt(0.5);
+            INFO("unit sphere, ray (1, 1, 0) + t (-1, -1, 0): enters at t = " << want << ", got "
+                 << (in ? "t = " + std::to_string(in->t) : std::string("no hit")));
+            REQUIRE(in.has_value());
+            CHECK(close(in->t, want, 1e-9));
+        }
+        for (auto [e1, e2] : {std::pair{2.0, 1.0}, std::pair{3.0, 0.5}, std::pair{1.0, 1.0}}) {  // the poles' normals
+            const Superquadric s{{1.2, 0.7, 0.9}, e1, e2};
+            const auto top = intersect_superquadric(s, {{0, 0, 4}, {0, 0, -1}}, 0, inf);
+            INFO(str(s) << ", ray down the z axis: the hit is the north pole (0, 0, 0.9) with normal (0, 0, 1); got "
+                        << (top ? "normal " + str(top->normal) : std::string("no hit")));
+            REQUIRE(top.has_value());
+            CHECK(close(top->t, 3.1, 1e-9));
+            CHECK(glm::length(top->normal - glm::dvec3(0, 0, 1)) <= 1e-9);
+        }
         CHECK_THROWS_AS(intersect_superquadric({{1, 1, 1}, 1, 1}, {{0, 0, -5}, {0, 0, 0}}, 0, 1), std::invalid_argument);
         Rng rng(54);
         for (int n = 0; n < 40; ++n) {

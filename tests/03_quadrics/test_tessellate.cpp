@@ -23,6 +23,19 @@ TEST_SUITE("Task 6: tessellation") {
             CHECK(glm::length(m.positions[0] - glm::dvec3(0, 0, -1.1)) <= 1e-12);
             CHECK(glm::length(m.positions[1] - glm::dvec3(0, 0, 1.1)) <= 1e-12);
             for (const auto& p : m.positions) CHECK(close(double(F_ld(s, p)), 1.0, 1e-9));
+            // ring i at η = −π/2 + iπ/n_eta, vertex j at ω = −π + 2πj/n_omega (the contract's grid), written out here
+            const auto sp = [](LD x, LD e) { return x == 0 ? LD(0) : (x < 0 ? -1 : 1) * std::pow(std::abs(x), e); };
+            for (int i = 1; i < ne; ++i)
+                for (int j = 0; j < no; ++j) {
+                    const LD eta = -LD(pi) / 2 + LD(pi) * i / ne, om = -LD(pi) + 2 * LD(pi) * j / no;
+                    const glm::dvec3 want{double(1.5L * sp(std::cos(eta), e1) * sp(std::cos(om), e2)),
+                                          double(0.7L * sp(std::cos(eta), e1) * sp(std::sin(om), e2)),
+                                          double(1.1L * sp(std::sin(eta), e1))};
+                    const glm::dvec3 got = m.positions[2 + (i - 1) * no + j];
+                    CHECK_MESSAGE(glm::length(got - want) <= 1e-9, "vertex " << 2 + (i - 1) * no + j << " (ring " << i
+                                                                             << ", j = " << j << ") should be " << str(want)
+                                                                             << ", got " << str(got));
+                }
             CHECK_MESSAGE(signed_volume(m) > 0, "the enclosed signed volume is " << double(signed_volume(m))
                                                                                  << ": the faces point inwards");
         }
@@ -91,6 +104,21 @@ TEST_SUITE("Task 6: tessellation") {
             CHECK_MESSAGE((v > 0 && std::abs(v - exact) / exact < 0.01),
                           "mesh volume " << v << ", exact " << exact << " (negative: the faces point inwards)");
         }
+        // A singular for the rank tolerance (|λ| <= 1e-9 max |λ|, as classify): a cylinder, not an ellipsoid
+        for (int axis = 0; axis < 3; ++axis)
+            for (double k : {1.0, 1e3}) {
+                glm::dmat4 Q(0.0);
+                Q[0][0] = Q[1][1] = Q[2][2] = k;
+                Q[3][3] = -k;
+                Q[axis][axis] = 0.5e-9 * k;
+                INFO("x² + y² + z² = 1 with axis " << axis << " scaled by 0.5e-9 (times " << k
+                                                   << "): a real elliptic cylinder for the rank tolerance");
+                CHECK_THROWS_AS(tessellate_ellipsoid(Q, 8, 8), std::invalid_argument);
+                Q[axis][axis] = 1e-9 * k;  // |λ| = 1e-9 max |λ| still counts as zero
+                CHECK_THROWS_AS(tessellate_ellipsoid(Q, 8, 8), std::invalid_argument);
+                Q[axis][axis] = 2e-9 * k;  // above the tolerance: a (very long) real ellipsoid
+                CHECK_NOTHROW(tessellate_ellipsoid(Q, 8, 8));
+            }
         for (QuadricType t : {QuadricType::imaginary_ellipsoid, QuadricType::hyperboloid_one_sheet,
                               QuadricType::elliptic_paraboloid, QuadricType::imaginary_cone}) {
             INFO(type_name(t) << " is not a real ellipsoid");

@@ -91,6 +91,37 @@ TEST_SUITE("Task 2: transforms") {
         Z[1] = glm::dvec4(2, 0, 0, 0);  // column 1 = 2 × column 0: singular
         Z[0] = glm::dvec4(1, 0, 0, 0);
         CHECK_THROWS_AS(transform_quadric(S, Z), std::invalid_argument);
+        for (int c = 0; c < 4; ++c) {  // any entry of the last row off (0, 0, 0, 1)
+            glm::dmat4 B(1.0);
+            B[c][3] = c == 3 ? 2.0 : 0.25;
+            INFO("M with last row entry [" << c << "][3] = " << B[c][3] << " is not affine");
+            CHECK_THROWS_AS(transform_quadric(S, B), std::invalid_argument);
+        }
+        // singular relative to its size: |det| <= 1e-12 * (largest |entry|)^3, wherever the largest entry is
+        for (int big = 0; big < 3; ++big)
+            for (bool in_row : {false, true}) {
+                glm::dmat4 L(1.0);
+                L[big][big] = 100;  // on the diagonal: its row and its column
+                if (in_row) {      // or off the diagonal, in row `big` (column (big + 1) % 3)
+                    L[big][big] = 1;
+                    L[(big + 1) % 3][big] = 100;
+                }
+                L[(big + 2) % 3][(big + 2) % 3] = 5e-10;  // det = 5e-8 <= 1e-12 * 100³ = 1e-6: singular
+                INFO("M = " << str(L) << " has det " << glm::determinant(glm::dmat3(L))
+                            << " <= 1e-12 * 100^3: singular for its size");
+                CHECK_THROWS_AS(transform_quadric(S, L), std::invalid_argument);
+            }
+        glm::dmat4 edge(1.0);  // det exactly 1e-12 * 1^3: singular (<=); 1.5e-12: invertible
+        edge[2][2] = 1e-12;
+        CHECK_THROWS_AS(transform_quadric(S, edge), std::invalid_argument);
+        edge[2][2] = 1.5e-12;
+        CHECK_NOTHROW(transform_quadric(S, edge));
+        for (double sc : {1e-3, 1e-5, 1e4}) {  // uniform scalings are invertible at every size
+            glm::dmat4 U(sc);
+            U[3][3] = 1;
+            INFO("x -> " << sc << " x is invertible");
+            CHECK_NOTHROW(transform_quadric(S, U));
+        }
         glm::dmat4 tiny(1e-3);  // a uniform scaling by 1e-3 is invertible (det relative to the scale)
         tiny[3][3] = 1;
         const glm::dmat4 got = transform_quadric(S, tiny);

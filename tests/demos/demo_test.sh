@@ -46,7 +46,7 @@ EOF
 png_size() { python3 -c "import struct,sys; print(*struct.unpack('>II', open(sys.argv[1],'rb').read()[16:24]))" "$1"; }
 
 echo "== geolab demo NN --help is the demo's help, with its window keys"
-for lab in 01 09; do
+for lab in 01 09 03; do
   "$bin/geolab" demo $lab --help >"help$lab.txt" 2>&1 || { cat "help$lab.txt"; fail "geolab demo $lab --help failed"; }
   grep -q "Window keys" "help$lab.txt" || { cat "help$lab.txt"; fail "geolab demo $lab --help does not list the window keys"; }
   grep -q -- "--png" "help$lab.txt" || fail "geolab demo $lab --help is not the demo's help"
@@ -64,7 +64,7 @@ done
 
 echo "== the memory cap: the grader's default, and a clear message when student code hits it"
 grader_mb=$("$bin/geolab" grade --help | sed -n 's/.*--memory-mb[^0-9]*\([0-9][0-9]*\).*/\1/p')
-for demo in demo_01_halfedge demo_09_spherical_dc; do
+for demo in demo_01_halfedge demo_09_spherical_dc demo_03_quadrics; do
   demo_mb=$("$bin/$demo" --help | sed -n 's/.*--memory-mb[^0-9]*\([0-9][0-9]*\).*/\1/p')
   [ -n "$grader_mb" ] && [ "$demo_mb" = "$grader_mb" ] || fail "$demo caps memory at '$demo_mb' MiB, the grader at '$grader_mb'"
 done
@@ -93,4 +93,8 @@ done
 c=$(coverage win01.png)
 echo "   window, half-edge 40 of the grid after Z: ${c}% covered"
 [ "$c" -ge 15 ] || fail "Z on a half-edge of the flat grid shows only ${c}% of the window (edge-on?)"
+xrun "$bin/demo_03_quadrics" --frames 3 --keys N3=Q= --screenshot win03.png >win03.log 2>&1 ||
+  { cat win03.log; fail "demo 03 in a window failed"; }
+grep -q "imaginary ellipsoid .*c=1.1 " win03.log && grep -q "ε₁ = 1.1," win03.log ||
+  { cat win03.log; fail "demo 03: N (next example), 3 (select c), = (+0.1), Q (superquadric), = did not do what the help says"; }
 echo "demos: help with keys, face-on half-edge zoom, the grader's memory cap, a window that fits, screenshots in out/"

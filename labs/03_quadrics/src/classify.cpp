@@ -7,7 +7,7 @@
 
 namespace geolab::quadrics {
 namespace {
-// Helper functions of your own can go here (e.g. the eigenvalues of a symmetric matrix).
+// Helper functions of your own can go here (symmetric_eigen is given).
 }  // namespace
 
 QuadricType classify(const glm::dmat4& Q) {

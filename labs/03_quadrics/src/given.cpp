@@ -1,10 +1,59 @@
-// Given code of lab 03 (read it, do not write it): the types' names and canonical forms, the camera's rays.
+// Given code of lab 03 (read it, do not write it): the types' names and canonical forms, the eigen-decomposition of a
+// symmetric matrix, the camera's rays.
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 #include "geolab/quadrics.hpp"
 
 namespace geolab::quadrics {
+
+SymmetricEigen symmetric_eigen(const glm::dmat4& S, int n) {
+    if (n != 3 && n != 4) throw std::invalid_argument("symmetric_eigen: n must be 3 or 4");
+    double m[4][4] = {}, v[4][4] = {};  // m: the matrix being diagonalized; v: the product of the rotations
+    for (int i = 0; i < n; ++i) {
+        v[i][i] = 1;
+        for (int j = 0; j < n; ++j) {
+            m[i][j] = 0.5 * S[i][j] + 0.5 * S[j][i];
+            if (!std::isfinite(m[i][j])) throw std::invalid_argument("symmetric_eigen: an entry is not finite");
+        }
+    }
+    // cyclic Jacobi: each rotation in the (p, q) plane zeroes m[p][q]; the off-diagonal mass falls quadratically
+    for (int sweep = 0; sweep < 60; ++sweep) {
+        double off = 0, diag = 0;
+        for (int i = 0; i < n; ++i) {
+            diag += m[i][i] * m[i][i];
+            for (int j = i + 1; j < n; ++j) off += m[i][j] * m[i][j];
+        }
+        if (off == 0 || off <= 1e-34 * diag) break;
+        for (int p = 0; p < n; ++p)
+            for (int q = p + 1; q < n; ++q) {
+                if (m[p][q] == 0) continue;
+                const double theta = (m[q][q] - m[p][p]) / (2 * m[p][q]);
+                const double t = (theta >= 0 ? 1 : -1) / (std::abs(theta) + std::sqrt(theta * theta + 1));
+                const double c = 1 / std::sqrt(t * t + 1), s = t * c;
+                for (int k = 0; k < n; ++k) {  // columns p, q of m and of v
+                    const double kp = m[k][p], kq = m[k][q];
+                    m[k][p] = c * kp - s * kq;
+                    m[k][q] = s * kp + c * kq;
+                    const double vp = v[k][p], vq = v[k][q];
+                    v[k][p] = c * vp - s * vq;
+                    v[k][q] = s * vp + c * vq;
+                }
+                for (int k = 0; k < n; ++k) {  // rows p, q of m
+                    const double pk = m[p][k], qk = m[q][k];
+                    m[p][k] = c * pk - s * qk;
+                    m[q][k] = s * pk + c * qk;
+                }
+            }
+    }
+    SymmetricEigen e;
+    for (int i = 0; i < n; ++i) {
+        e.values[i] = m[i][i];
+        for (int k = 0; k < n; ++k) e.vectors[i][k] = v[k][i];
+    }
+    return e;
+}
 
 std::string type_name(QuadricType t) {
     switch (t) {

@@ -18,12 +18,13 @@ Roots solve_quadratic(double alpha, double beta, double gamma) {
         return r;
     }
     const double disc = beta * beta - 4 * alpha * gamma;
-    if (disc < 0) return r;
-    if (disc == 0) {
+    // Δ within its own rounding error of 0 is a double root (a tangent ray, a ray through coincident planes)
+    if (std::abs(disc) <= 1e-12 * (beta * beta + 4 * std::abs(alpha * gamma))) {
         r.count = 1;
         r.t0 = r.t1 = -beta / (2 * alpha);
         return r;
     }
+    if (disc < 0) return r;
     // q has the sign of -β and the larger magnitude: no cancellation in β + sign(β)√Δ
     const double q = -0.5 * (beta + std::copysign(std::sqrt(disc), beta));
     double t0 = q / alpha, t1 = gamma / q;

@@ -79,35 +79,21 @@ std::optional<Hit> intersect_superquadric(const Superquadric& s, const Ray& ray,
         t1 = std::min(t1, b);
     }
     if (!(t0 <= t1)) return std::nullopt;
-    // g = F^(ε₁/2) − 1 grows like a distance (F is homogeneous of degree 2/ε₁): well scaled for bisection
-    auto g = [&](double t) { return std::pow(inside_outside(s, ray.origin + t * ray.direction), s.e1 / 2) - 1; };
+    // g = F − 1: < 0 inside, 0 on, > 0 outside. March from t0 to t1 in n steps; the first step whose ends differ in
+    // sign brackets the first crossing, which bisection narrows to two neighbouring doubles (only signs matter).
+    auto g = [&](double t) { return inside_outside(s, ray.origin + t * ray.direction) - 1; };
     const int n = 1024;
-    double ta = t0, ga = g(ta);
+    double ta = t0, ga = g(t0);
     double root = std::numeric_limits<double>::quiet_NaN();
-    if (ga == 0) root = ta;
+    if (ga == 0) root = t0;  // starting on the surface
     for (int k = 1; k <= n && std::isnan(root); ++k) {
         const double tb = k == n ? t1 : t0 + (t1 - t0) * k / n;
         const double gb = g(tb);
-        if (gb == 0) {
-            root = tb;
-        } else if ((ga < 0) != (gb < 0)) {
-            double lo = ta, hi = tb, glo = ga;
-            for (int it = 0; it < 200; ++it) {
-                const double mid = 0.5 * (lo + hi);
-                if (mid <= lo || mid >= hi) break;
-                const double gm = g(mid);
-                if (gm == 0) {
-                    lo = hi = mid;
-                    break;
-                }
-                if ((gm < 0) == (glo < 0)) {
-                    lo = mid;
-                    glo = gm;
-                } else {
-                    hi = mid;
-                }
-            }
-            root = 0.5 * (lo + hi);
+        if ((ga < 0) != (gb < 0)) {
+            double lo = ta, hi = tb;  // g(lo) has ga's sign, g(hi) the other
+            for (double mid = 0.5 * (lo + hi); mid > lo && mid < hi; mid = 0.5 * (lo + hi))
+                ((g(mid) < 0) == (ga < 0) ? lo : hi) = mid;
+            root = hi;
         }
         ta = tb;
         ga = gb;

@@ -31,30 +31,6 @@ void check_grid(int n_eta, int n_omega, const char* who) {
     if (n_eta < 2 || n_omega < 3)
         throw std::invalid_argument(std::string(who) + ": n_eta must be >= 2 and n_omega >= 3");
 }
-
-// Eigen-decomposition of a symmetric 3×3 by cyclic Jacobi: values ev, vectors the columns of V.
-void jacobi3(glm::dmat3 m, glm::dvec3& ev, glm::dmat3& V) {
-    V = glm::dmat3(1.0);
-    for (int sweep = 0; sweep < 100; ++sweep) {
-        const double off = m[0][1] * m[0][1] + m[0][2] * m[0][2] + m[1][2] * m[1][2];
-        if (off == 0 || off <= 1e-34 * (m[0][0] * m[0][0] + m[1][1] * m[1][1] + m[2][2] * m[2][2])) break;
-        for (int p = 0; p < 3; ++p)
-            for (int q = p + 1; q < 3; ++q) {
-                if (m[p][q] == 0) continue;
-                const double theta = (m[q][q] - m[p][p]) / (2 * m[p][q]);
-                const double t = (theta >= 0 ? 1 : -1) / (std::abs(theta) + std::sqrt(theta * theta + 1));
-                const double c = 1 / std::sqrt(t * t + 1), s = t * c;
-                glm::dmat3 J(1.0);  // rotation in the (p, q) plane
-                J[p][p] = c;
-                J[q][q] = c;
-                J[q][p] = s;   // column q, row p
-                J[p][q] = -s;  // column p, row q
-                m = glm::transpose(J) * m * J;
-                V = V * J;
-            }
-    }
-    ev = {m[0][0], m[1][1], m[2][2]};
-}
 // END SOLUTION
 }  // namespace
 
@@ -77,13 +53,12 @@ PolygonSoup tessellate_superquadric(const Superquadric& s, int n_eta, int n_omeg
 PolygonSoup tessellate_ellipsoid(const glm::dmat4& Q, int n_eta, int n_omega) {
     // BEGIN SOLUTION
     check_grid(n_eta, n_omega, "tessellate_ellipsoid");
-    glm::dmat3 A;
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) A[i][j] = 0.5 * (Q[i][j] + Q[j][i]);
+    const glm::dmat3 A(Q);  // the upper-left 3×3 (Q is symmetric)
     const glm::dvec3 b{Q[3][0], Q[3][1], Q[3][2]};
-    glm::dvec3 ev;
-    glm::dmat3 V;
-    jacobi3(A, ev, V);
+    const SymmetricEigen e = symmetric_eigen(Q, 3);
+    const glm::dvec3 ev{e.values[0], e.values[1], e.values[2]};
+    // the eigenvectors as columns: a rotation (det +1), so the frame is right-handed and the mesh stays outward
+    const glm::dmat3 V{glm::dvec3(e.vectors[0]), glm::dvec3(e.vectors[1]), glm::dvec3(e.vectors[2])};
     const double big = std::max({std::abs(ev.x), std::abs(ev.y), std::abs(ev.z)});
     for (int i = 0; i < 3; ++i)
         if (!(std::abs(ev[i]) > 1e-9 * big))
@@ -97,7 +72,6 @@ PolygonSoup tessellate_ellipsoid(const glm::dmat4& Q, int n_eta, int n_omega) {
         if (!(r2 > 0)) throw std::invalid_argument("tessellate_ellipsoid: Q is not a real ellipsoid");
         radius[i] = std::sqrt(r2);
     }
-    if (glm::determinant(V) < 0) V[2] = -V[2];  // a right-handed frame keeps the orientation
     PolygonSoup soup;
     const double pi = std::numbers::pi;
     auto place = [&](double eta, double omega) {

@@ -15,7 +15,8 @@
 //! | 6    | tessellate.cpp    | tessellate_superquadric, tessellate_ellipsoid                     | closed meshes, χ = 2                | §8      |
 //! | 7    | render.cpp        | render_lambert                                                    | one ray per pixel, Lambert shading  | §9      |
 //!
-//! Given (read, do not write): type_name, canonical_form (given.cpp) and the camera's rays (PinholeCamera below).
+//! Given (read, do not write): type_name, canonical_form, symmetric_eigen (given.cpp) and the camera's rays
+//! (PinholeCamera below).
 //! Points are homogeneous X = (x, y, z, 1); directions D = (dx, dy, dz, 0). Matrices are glm::dmat4, column-major
 //! (Q[col][row]); every Q here is symmetric.
 #include <optional>
@@ -97,6 +98,18 @@ enum class QuadricType : int {
 //! \throw std::invalid_argument when A is zero (not a quadric: a plane or nothing) or an entry is not finite.
 QuadricType classify(const glm::dmat4& Q);
 
+//! The eigen-decomposition of a symmetric n×n block (given; the lab is about what the eigenvalues say, not how to
+//! compute them): values[i] is an eigenvalue with the unit eigenvector vectors[i] (entries n..3 are 0); unsorted.
+//! The vectors are the columns of a product of plane rotations: orthonormal, with determinant +1.
+struct SymmetricEigen {
+    double values[4] = {0, 0, 0, 0};
+    glm::dvec4 vectors[4] = {};
+};
+//! The eigenvalues and eigenvectors of the upper-left n×n block of S (n = 3: the quadratic part A; n = 4: all of
+//! Q), read as its symmetric part, by cyclic Jacobi rotations (given.cpp): accurate to rounding relative to the
+//! largest |eigenvalue|. \throw std::invalid_argument when n is not 3 or 4 or an entry of the block is not finite.
+SymmetricEigen symmetric_eigen(const glm::dmat4& S, int n);
+
 //! "real ellipsoid", "hyperboloid of one sheet", ... (given.cpp).
 std::string type_name(QuadricType t);
 //! The canonical equation of a type, e.g. "x²/a² + y²/b² + z²/c² = 1" (given.cpp).
@@ -106,8 +119,11 @@ std::string canonical_form(QuadricType t);
 
 //! The real roots of α t² + β t + γ = 0, sorted (t0 ≤ t1). Without cancellation (handout §6):
 //! q = −(β + sign(β)·√Δ)/2, roots q/α and γ/q — never (−β ± √Δ)/(2α), which loses the small root.
-//! count = 0: no real root (Δ < 0, or α = β = 0); 1: α = 0 and β ≠ 0 (the linear root), or a double root
-//! (Δ = 0: t0 = t1); 2: two roots. When α = β = γ = 0 every t is a root: count = 0 by convention.
+//! Δ = β² − 4αγ is rounded: it counts as 0 when |Δ| ≤ 1e-12 · (β² + 4|αγ|) (a tangent ray; a ray through
+//! coincident planes, where Δ is 0 exactly but rounds to ±tiny).
+//! count = 0: no real root (Δ < 0 beyond that tolerance, or α = β = 0); 1: α = 0 and β ≠ 0 (the linear root), or
+//! a double root (Δ counted 0: t0 = t1 = −β/(2α)); 2: two roots. When α = β = γ = 0 every t is a root: count = 0
+//! by convention.
 struct Roots {
     int count = 0;
     double t0 = 0, t1 = 0;
@@ -180,15 +196,18 @@ double superquadric_volume(const Superquadric& s);
 
 //! The first crossing of the ray with the surface F = 1 for t in [t_min, t_max] (entering or leaving), by a safe
 //! root finder on the inside–outside function (handout §7: clip to the bounding box, bracket a sign change of
-//! F^(ε₁/2) − 1 along the ray, then bisect or Brent): the returned t is within 1e-9 · (1 + |t|) of the true
-//! crossing. Rays that only graze the surface (touch without crossing) may be reported or not.
+//! F − 1 along the ray in steps of at most 1/1000 of the clipped interval, then bisect; F^(ε₁/2) − 1 has the same
+//! signs and grows like a distance, better for Brent): the returned t is within 1e-9 · (1 + |t|) of the true
+//! crossing. Rays that only graze the surface (touch without crossing) may be reported or not; a ray starting on
+//! the surface (F = 1 at t_min) hits at t_min.
 //! nullopt when there is no crossing. \throw std::invalid_argument when direction is zero or t_min > t_max.
 std::optional<Hit> intersect_superquadric(const Superquadric& s, const Ray& ray, double t_min, double t_max);
 
 // ==== Task 6: tessellation (handout §8) =======================================================================
 
 //! The superquadric as a closed triangle mesh on an (η, ω) grid: two pole vertices (η = ±π/2, listed first: the
-//! south pole is vertex 0, the north pole vertex 1), n_eta − 1 rings of n_omega vertices, fans at the poles and
+//! south pole is vertex 0, the north pole vertex 1), n_eta − 1 rings of n_omega vertices (vertex 2 + (i − 1)·n_omega + j
+//! is superquadric_point at η = −π/2 + iπ/n_eta, ω = −π + 2πj/n_omega, 1 ≤ i < n_eta), fans at the poles and
 //! two triangles per grid quad; counter-clockwise seen from outside (normals outward), every vertex on the
 //! surface. V = 2 + (n_eta − 1)·n_omega, F = 2·n_omega·(n_eta − 1), χ = 2.
 //! \throw std::invalid_argument when n_eta < 2 or n_omega < 3, or as inside_outside.
@@ -197,7 +216,8 @@ PolygonSoup tessellate_superquadric(const Superquadric& s, int n_eta, int n_omeg
 //! The same mesh for a real ellipsoid given by Q (any centre and orientation): vertex for (η, ω) is
 //! centre + Σ rᵢ uᵢ · (unit sphere point at (η, ω)), with uᵢ the eigenvectors of A (a right-handed frame) and rᵢ
 //! the semi-axes; every vertex satisfies XᵀQX = 0 to rounding, the mesh is closed and outward.
-//! \throw std::invalid_argument when Q is not a real ellipsoid, or on bad n_eta, n_omega.
+//! \throw std::invalid_argument when Q is not a real ellipsoid (an eigenvalue of A with |λ| ≤ 1e-9 · max |λ| is
+//!        zero, as in classify), or on bad n_eta, n_omega.
 PolygonSoup tessellate_ellipsoid(const glm::dmat4& Q, int n_eta, int n_omega);
 
 // ==== Task 7: images (handout §9) =============================================================================
