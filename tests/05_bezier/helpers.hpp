@@ -106,8 +106,16 @@ inline V3L ref_deriv(const Poly3& P, LD t, int d = 0) {
         diff.pop_back();
         f *= (n - r);
     }
+    // Σ C(m, k) t^k (1 − t)^(m − k) diff[k], m = n − d, with the powers and binomials built incrementally
+    const int m = n - d;
+    std::vector<LD> tp(m + 1, 1), sp(m + 1, 1);
+    for (int k = 1; k <= m; ++k) tp[k] = tp[k - 1] * t, sp[k] = sp[k - 1] * (1 - t);
     V3L c{};
-    for (int k = 0; k <= n - d; ++k) c = c + bern(n - d, k, t) * diff[k];
+    LD b = 1;
+    for (int k = 0; k <= m; ++k) {
+        c = c + (b * tp[k] * sp[m - k]) * diff[k];
+        b = b * (m - k) / (k + 1);
+    }
     return f * c;
 }
 inline glm::dvec3 ref_point(const Poly3& P, LD t) { return D(ref_deriv(P, t, 0)); }
@@ -200,7 +208,7 @@ inline const GlyphOutline& glyph(char32_t c) {
 //! The global minimum of |C(t) − q| over [0, 1]: dense sampling then golden-section search, long double.
 inline LD ref_closest_t(const Poly3& P, const glm::dvec3& q) {
     auto dist = [&](LD t) { return norm(ref_deriv(P, t) - L(q)); };
-    const int N = 2000;
+    const int N = 1000;
     int best = 0;
     LD bd = dist(0);
     for (int i = 1; i <= N; ++i)

@@ -5,7 +5,7 @@
 using namespace lab05;
 
 TEST_SUITE("Task 1: basics") {
-    TEST_CASE("bernstein: known values, non-negative on [0, 1], partition of unity, symmetry" * geolab::points(3) *
+    TEST_CASE("bernstein: known values; non-negative on (0; 1); partition of unity; symmetry" * geolab::points(3) *
               geolab::hint("B_i^n(t) = C(n, i) t^i (1 − t)^(n − i); 0 when i < 0 or i > n (handout §2).")) {
         CHECK(bernstein(3, 1, 0.5) == 0.375);
         CHECK(bernstein(3, 0, 0.5) == 0.125);
@@ -32,7 +32,7 @@ TEST_SUITE("Task 1: basics") {
         CHECK_THROWS_AS(bernstein(-1, 0, 0.5), std::invalid_argument);
     }
 
-    TEST_CASE("de Casteljau: the lecture's quiz (−8,4), (−4,4), (0,0), (4,−4) at t = 1/2 is (−2, 1.5)" *
+    TEST_CASE("de Casteljau: the lecture's quiz (−8;4); (−4;4); (0;0); (4;−4) at t = 1/2 is (−2; 1.5)" *
               geolab::points(3) *
               geolab::hint("Repeated (1 − t):t interpolation of neighbouring points, n rounds (handout §2).")) {
         const Poly2 quiz{{-8, 4}, {-4, 4}, {0, 0}, {4, -4}};
@@ -52,7 +52,7 @@ TEST_SUITE("Task 1: basics") {
         CHECK(q.y == 3.3125);
     }
 
-    TEST_CASE("de Casteljau: any degree in 2D and 3D, exact at dyadic t on dyadic points" * geolab::points(3) *
+    TEST_CASE("de Casteljau: any degree in 2D and 3D; exact at dyadic t on dyadic points" * geolab::points(3) *
               geolab::hint("n rounds for n + 1 points; P_k^r = (1 − t) P_k^(r−1) + t P_(k+1)^(r−1). Degree 0 is the "
                            "point itself. Empty input: std::invalid_argument.")) {
         Rng rng(1);
@@ -76,7 +76,7 @@ TEST_SUITE("Task 1: basics") {
         CHECK_THROWS_AS(de_casteljau(Poly2{}, 0.5), std::invalid_argument);
     }
 
-    TEST_CASE("de Casteljau triangle: row r has n + 1 − r points, each the (1 − t):t mix of the row above" *
+    TEST_CASE("de Casteljau triangle: row r has n + 1 − r points; each the (1 − t):t mix of the row above" *
               geolab::points(3) *
               geolab::hint("Row 0 is P itself; row n is the single point C(t). Check your loop bounds: an "
                            "off-by-one leaves a row too long or a point unmixed.")) {

@@ -5,7 +5,7 @@
 using namespace lab05;
 
 TEST_SUITE("Task 2: operations") {
-    TEST_CASE("subdivide: the left half is C on [0, t], the right half C on [t, 1]" * geolab::points(4) *
+    TEST_CASE("subdivide: the left half is C on (0; t); the right half C on (t; 1)" * geolab::points(3) *
               geolab::hint("left = the first point of every de Casteljau row (P_0^0, P_0^1, ..., P_0^n); right = the "
                            "last point of every row, from the bottom (P_0^n, P_1^(n−1), ..., P_n^0). Do not swap them.")) {
         Rng rng(10);
@@ -32,7 +32,7 @@ TEST_SUITE("Task 2: operations") {
         CHECK_THROWS_AS(subdivide(Poly3{}, 0.5), std::invalid_argument);
     }
 
-    TEST_CASE("restrict_to: C on [a, b] reparametrised to [0, 1]; a > b reverses" * geolab::points(2) *
+    TEST_CASE("restrict_to: C on (a; b) reparametrised to (0; 1); a > b reverses" * geolab::points(2) *
               geolab::hint("Two subdivisions: the right part at a, then the left part of that at (b − a)/(1 − a). "
                            "Mind a = 1.")) {
         Rng rng(11);
@@ -53,7 +53,7 @@ TEST_SUITE("Task 2: operations") {
         CHECK_THROWS_AS(restrict_to(rng.poly(3), 0.5, 0.5), std::invalid_argument);
     }
 
-    TEST_CASE("hodograph: n (P_(k+1) − P_k), and C'(t) from it" * geolab::points(4) *
+    TEST_CASE("hodograph: n (P_(k+1) − P_k); and C'(t) from it" * geolab::points(3) *
               geolab::hint("The derivative of a degree-n Bézier curve is a degree n − 1 curve with control points "
                            "n (P_(k+1) − P_k): do not forget the factor n (handout §3).")) {
         const Poly3 cubic{{0, 0, 0}, {1, 2, 0}, {3, 3, 1}, {4, 0, 2}};
@@ -89,7 +89,7 @@ TEST_SUITE("Task 2: operations") {
             }
     }
 
-    TEST_CASE("elevate: one more control point, the same curve; known points" * geolab::points(3) *
+    TEST_CASE("elevate: one more control point; the same curve; known points" * geolab::points(3) *
               geolab::hint("Q_k = (k/(n+1)) P_(k−1) + (1 − k/(n+1)) P_k; the ends stay (handout §3).")) {
         const Poly3 quad{{0, 0, 0}, {3, 3, 0}, {6, 0, 0}};
         const Poly3 e = elevate(quad);
@@ -113,7 +113,7 @@ TEST_SUITE("Task 2: operations") {
         }
     }
 
-    TEST_CASE("curvature, torsion and signed curvature against the derivatives' formulas" * geolab::points(3) *
+    TEST_CASE("curvature; torsion and signed curvature against the derivatives' formulas" * geolab::points(3) *
               geolab::hint("κ = |C' × C''| / |C'|³, τ = (C' × C'') · C''' / |C' × C''|², signed κ = (x'y'' − y'x'') "
                            "/ |C'|³: positive turning left.")) {
         // y = x² on [−1, 1]: κ = 2 at the vertex, turning left

@@ -100,6 +100,7 @@ void derivative_roots(const std::vector<double>& d, double a, double b, std::vec
         }
         out.push_back(0.5 * (x0 + x1));
     }
+    out.push_back(m);  // a root exactly at the split point would be lost by both halves (a curve point: harmless)
     derivative_roots(l, a, m, out, depth + 1);
     derivative_roots(r, m, b, out, depth + 1);
 }
