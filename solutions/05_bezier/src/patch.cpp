@@ -111,6 +111,11 @@ PatchMesh tessellate_patches(const std::vector<BezierPatch>& patches, int n, dou
     }
     PatchMesh mesh;
     auto& soup = mesh.soup;
+    const std::size_t per = std::size_t(n + 1) * std::size_t(n + 1);
+    soup.positions.reserve(patches.size() * per);
+    mesh.normals.reserve(patches.size() * per);
+    soup.indices.reserve(patches.size() * 6 * std::size_t(n) * std::size_t(n));
+    soup.offsets.reserve(patches.size() * 2 * std::size_t(n) * std::size_t(n) + 1);
     // Border vertices go through a hash grid of cell weld_tol (exact positions when weld_tol = 0).
     struct Key {
         std::int64_t x, y, z;
