@@ -104,6 +104,8 @@ TEST_SUITE("Task 8: advanced") {
             }
         }
         CHECK_THROWS_AS(de_boor(uni, 2.5), std::invalid_argument);
+        CHECK_THROWS_AS(de_boor(BSpline{0, {0, 1, 2, 3, 4}, uni.points}, 1.5), std::invalid_argument);
+        CHECK_THROWS_AS(de_boor(BSpline{3, {std::nan(""), 1, 2, 3, 4, 5, 6, 7}, uni.points}, 3), std::invalid_argument);
         CHECK_THROWS_AS(de_boor(BSpline{3, {0, 1, 2}, uni.points}, 3), std::invalid_argument);
         CHECK_THROWS_AS(de_boor(BSpline{3, {0, 1, 2, 3, 5, 4, 6, 7}, uni.points}, 3), std::invalid_argument);
     }

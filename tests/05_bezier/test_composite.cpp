@@ -91,6 +91,18 @@ TEST_SUITE("Task 4: composite curves") {
         near[0] += glm::dvec3(1e-9, 0, 0);
         CHECK(continuity(A, near, 1e-6).c_order >= 0);
         CHECK(continuity(A, near, 1e-12).c_order == -1);
+        // tol = 0 is allowed: an exact C1 join (dyadic points) is C1 at tol 0
+        const Poly3 exact{A[3], 2.0 * A[3] - A[2], {8, 0, 0}, {9, 1, 0}};
+        CHECK(continuity(A, exact, 0.0).c_order == 1);
+        CHECK_THROWS_AS(continuity(A, exact, -1.0), std::invalid_argument);
+        // the tolerance is relative to the vectors' lengths: a C1 join at scale 1e6 off by 1e-7 is C1 at tol 1e-12
+        Poly3 big = A, bigb = exact;
+        for (auto& p : big) p *= 1e6;
+        for (auto& p : bigb) p *= 1e6;
+        bigb[1] += glm::dvec3(1e-7, 0, 0);
+        const Continuity cb = continuity(big, bigb, 1e-12);
+        INFO("C1 join scaled by 1e6, b1 moved by 1e-7 (relative 1e-13): expected C1, got " << str(cb));
+        CHECK(cb.c_order == 1);
     }
 
     TEST_CASE("join_c1 and join_g1 produce the joints they promise" * geolab::points(3) *

@@ -64,6 +64,8 @@ TEST_SUITE("Task 3: measures") {
                                << ": expected " << num(w) << ", got " << num(g));
                 CHECK(std::abs(g - w) <= tol + 1e-12 * w);
             }
+        // a tolerance below rounding still ends (at rounding accuracy)
+        CHECK(std::abs(arc_length(parabola, 0, 1, 1e-300) - want) <= 1e-12);
         CHECK_THROWS_AS(arc_length(parabola, 0, 1, 0), std::invalid_argument);
         CHECK_THROWS_AS(arc_length(parabola, 0.5, 0.25, 1e-6), std::invalid_argument);
         CHECK_THROWS_AS(arc_length(parabola, 0, 1.5, 1e-6), std::invalid_argument);

@@ -72,6 +72,45 @@ TEST_SUITE("Task 5: tensor-product patches") {
             INFO("random patch at (" << num(u) << ", " << num(v) << "): expected " << str(want) << ", got " << str(got));
             CHECK(close3(got, want, 1e-10));
         }
+        // the cap's collapsed edge moved to u = 1 (rows reversed) and to v = 0 / v = 1 (transposed): the limit
+        // normal must come from inside the patch on every side
+        BezierPatch Cu1{2, 3, {}}, Cv0{3, 2, {}}, Cv1{3, 2, {}};
+        const BezierPatch C0 = cap();
+        for (int i = 2; i >= 0; --i)
+            for (int j = 0; j <= 3; ++j) Cu1.points.push_back(C0.points[i * 4 + j]);
+        for (int j = 0; j <= 3; ++j)
+            for (int i = 0; i <= 2; ++i) Cv0.points.push_back(C0.points[i * 4 + j]);
+        for (int j = 0; j <= 3; ++j)
+            for (int i = 2; i >= 0; --i) Cv1.points.push_back(C0.points[i * 4 + j]);
+        struct Side {
+            const char* name;
+            const BezierPatch* S;
+            double u, v, du, dv;
+        };
+        const Side sides[] = {{"collapsed u = 1", &Cu1, 1.0, 0.4, -1e-5, 0.0},
+                              {"collapsed v = 0", &Cv0, 0.4, 0.0, 0.0, 1e-5},
+                              {"collapsed v = 1", &Cv1, 0.6, 1.0, 0.0, -1e-5}};
+        for (const auto& sd : sides) {
+            const glm::dvec3 n0 = patch_normal(*sd.S, sd.u, sd.v);
+            const V3L c = cross(ref_patch(*sd.S, sd.u + sd.du, sd.v + sd.dv, 1, 0),
+                                ref_patch(*sd.S, sd.u + sd.du, sd.v + sd.dv, 0, 1));
+            const glm::dvec3 near = D((1 / norm(c)) * c);
+            INFO(sd.name << ": normal at the edge " << str(n0) << ", just inside " << str(near));
+            REQUIRE(std::isfinite(n0.x + n0.y + n0.z));
+            CHECK(glm::dot(n0, near) >= 0.999);
+        }
+        // a corner where S_u, S_v and S_uv all vanish (P00 = P01 = P10 = P11): the normal from just inside
+        BezierPatch flat{3, 3, {}};
+        for (int i = 0; i <= 3; ++i)
+            for (int j = 0; j <= 3; ++j)
+                flat.points.push_back({std::max(i, 1) - 1.0, std::max(j, 1) - 1.0, 0.1 * i * j});
+        {
+            const glm::dvec3 n0 = patch_normal(flat, 0, 0);
+            const V3L c = cross(ref_patch(flat, 1e-3, 1e-3, 1, 0), ref_patch(flat, 1e-3, 1e-3, 0, 1));
+            INFO("corner with S_u = S_v = S_uv = 0: normal " << str(n0) << ", just inside " << str(D((1 / norm(c)) * c)));
+            REQUIRE(std::isfinite(n0.x + n0.y + n0.z));
+            CHECK(glm::dot(n0, D((1 / norm(c)) * c)) >= 0.99);
+        }
         const BezierPatch C = cap();
         for (double v : {0.0, 0.3, 0.5, 1.0}) {
             const glm::dvec3 n0 = patch_normal(C, 0, v);
@@ -138,7 +177,11 @@ TEST_SUITE("Task 5: tensor-product patches") {
                                                           << two.soup.n_vertices());
         CHECK(two.soup.n_vertices() == std::size_t((2 * n + 1) * (n + 1)));
         CHECK(two.soup.n_faces() == std::size_t(4 * n * n));
+        // weld_tol = 0 welds bitwise-equal border samples (the shared border's samples are exact here)
+        const PatchMesh exact = tessellate_patches({L, R}, n, 0.0, false);
+        CHECK(exact.soup.n_vertices() == std::size_t((2 * n + 1) * (n + 1)));
         CHECK_THROWS_AS(tessellate_patches({S}, 0, 1e-9, false), std::invalid_argument);
+        CHECK_THROWS_AS(tessellate_patches({S}, 2, -1.0, false), std::invalid_argument);
     }
 }
 

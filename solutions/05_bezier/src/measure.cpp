@@ -52,7 +52,9 @@ double gauss(const Poly3& D, double a, double b) {
 
 double adapt(const Poly3& D, double a, double b, double tol, int depth) {
     const double g5 = gauss<5>(D, a, b), g10 = gauss<10>(D, a, b);
-    if (std::abs(g10 - g5) <= tol || depth >= 50) return g10;
+    // Done when the rules agree to tol, or to rounding (a tol below rounding would otherwise split to depth 50
+    // everywhere).
+    if (std::abs(g10 - g5) <= std::max(tol, 1e-14 * std::abs(g10)) || depth >= 50) return g10;
     const double m = 0.5 * (a + b);
     return adapt(D, a, m, 0.5 * tol, depth + 1) + adapt(D, m, b, 0.5 * tol, depth + 1);
 }
@@ -62,7 +64,7 @@ double adapt(const Poly3& D, double a, double b, double tol, int depth) {
 void derivative_roots(const std::vector<double>& d, double a, double b, std::vector<double>& out, int depth) {
     const auto [lo, hi] = std::minmax_element(d.begin(), d.end());
     if (*lo >= 0 || *hi <= 0) return;  // no sign change of the derivative inside (convex hull)
-    if (depth > 40) {
+    if (depth > 40) {  // the interval is 2^-41 wide: its midpoint is the root to far below rounding of C
         out.push_back(0.5 * (a + b));
         return;
     }
@@ -77,29 +79,6 @@ void derivative_roots(const std::vector<double>& d, double a, double b, std::vec
         r[n - k] = w[n - k];
     }
     const double m = 0.5 * (a + b);
-    if (b - a < 1.0 / 64 && d.front() * d.back() < 0) {
-        // One bracketed root is likely: bisect the derivative there, and keep looking on both sides too.
-        auto eval = [&](double t) {
-            std::vector<double> e = d;
-            const double s = (t - a) / (b - a);
-            for (std::size_t k = 1; k <= n; ++k)
-                for (std::size_t i = 0; i + k <= n; ++i) e[i] = (1 - s) * e[i] + s * e[i + 1];
-            return e[0];
-        };
-        double x0 = a, x1 = b, f0 = d.front();
-        for (int it = 0; it < 200 && x1 - x0 > 0; ++it) {
-            const double xm = 0.5 * (x0 + x1);
-            if (xm <= x0 || xm >= x1) break;
-            const double fm = eval(xm);
-            if ((fm < 0) == (f0 < 0)) {
-                x0 = xm;
-                f0 = fm;
-            } else {
-                x1 = xm;
-            }
-        }
-        out.push_back(0.5 * (x0 + x1));
-    }
     out.push_back(m);  // a root exactly at the split point would be lost by both halves (a curve point: harmless)
     derivative_roots(l, a, m, out, depth + 1);
     derivative_roots(r, m, b, out, depth + 1);
@@ -133,7 +112,6 @@ double parameter_at_length(const Poly3& P, double s, double tol) {
         const double speed = glm::length(de_casteljau(D, t));
         double next = speed > 0 ? t - f / speed : 0.5 * (lo + hi);
         if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);  // Newton left the bracket: bisect
-        if (next == t) return t;
         t = next;
     }
     return t;
