@@ -36,6 +36,8 @@ long parse_int(const std::string& file, std::size_t line, const std::string& tok
 double parse_double(const std::string& file, std::size_t line, const std::string& tok) {
     double v = 0;
     const auto [p, ec] = std::from_chars(tok.data(), tok.data() + tok.size(), v);
+    if (ec == std::errc::result_out_of_range && p == tok.data() + tok.size())
+        throw IoError(file, line, "coordinate '" + tok + "' is out of the range of a double");
     if (ec != std::errc() || p != tok.data() + tok.size())
         throw IoError(file, line, "coordinate '" + tok + "' is not a number");
     if (!std::isfinite(v)) throw IoError(file, line, "coordinate '" + tok + "' is not finite");
