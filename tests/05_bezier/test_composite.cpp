@@ -94,6 +94,11 @@ TEST_SUITE("Task 4: composite curves") {
         // tol = 0 is allowed: an exact C1 join (dyadic points) is C1 at tol 0
         const Poly3 exact{A[3], 2.0 * A[3] - A[2], {8, 0, 0}, {9, 1, 0}};
         CHECK(continuity(A, exact, 0.0).c_order == 1);
+        const Poly3 ax{{0, 0, 0}, {1, 1, 0}, {2, 0, 0}, {3, 0, 0}};  // its last leg along x: exact unit tangent
+        const Continuity g0 = continuity(ax, Poly3{{3, 0, 0}, {5, 0, 0}, {6, 1, 0}}, 0.0);
+        INFO("G1 joint along x at tol 0: expected C0 / G1, got " << str(g0));
+        CHECK(g0.c_order == 0);
+        CHECK(g0.g_order == 1);
         CHECK_THROWS_AS(continuity(A, exact, -1.0), std::invalid_argument);
         // the tolerance is relative to the vectors' lengths: a C1 join at scale 1e6 off by 1e-7 is C1 at tol 1e-12
         Poly3 big = A, bigb = exact;

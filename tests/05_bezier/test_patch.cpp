@@ -110,7 +110,17 @@ TEST_SUITE("Task 5: tensor-product patches") {
             INFO("corner with S_u = S_v = S_uv = 0: normal " << str(n0) << ", just inside " << str(D((1 / norm(c)) * c)));
             REQUIRE(std::isfinite(n0.x + n0.y + n0.z));
             CHECK(glm::dot(n0, D((1 / norm(c)) * c)) >= 0.99);
+            // the same corner at (1, 1): rows and columns reversed
+            BezierPatch rev{3, 3, {}};
+            for (int i = 3; i >= 0; --i)
+                for (int j = 3; j >= 0; --j) rev.points.push_back(flat.points[i * 4 + j]);
+            const glm::dvec3 n1 = patch_normal(rev, 1, 1);
+            const V3L c1 = cross(ref_patch(rev, 1 - 1e-3, 1 - 1e-3, 1, 0), ref_patch(rev, 1 - 1e-3, 1 - 1e-3, 0, 1));
+            INFO("the corner at (1, 1): normal " << str(n1) << ", just inside " << str(D((1 / norm(c1)) * c1)));
+            REQUIRE(std::isfinite(n1.x + n1.y + n1.z));
+            CHECK(glm::dot(n1, D((1 / norm(c1)) * c1)) >= 0.99);
         }
+        CHECK_THROWS_AS(patch_normal(BezierPatch{0, 1, {{0, 0, 0}, {1, 0, 0}}}, 0.5, 0.5), std::invalid_argument);
         const BezierPatch C = cap();
         for (double v : {0.0, 0.3, 0.5, 1.0}) {
             const glm::dvec3 n0 = patch_normal(C, 0, v);
@@ -157,6 +167,32 @@ TEST_SUITE("Task 5: tensor-product patches") {
                 INFO("face " << f << ": its normal " << str(fn) << " should agree with its vertices' " << str(vn));
                 CHECK(glm::dot(fn, vn) > 0);
             }
+            // each vertex normal is the patch's unit normal there; the triangles' total area is the grid's
+            for (std::size_t k = 0; k < m.soup.n_vertices(); ++k) {
+                const glm::dvec3 p = m.soup.positions[k];
+                for (int i = 0; i <= n; ++i)
+                    for (int j = 0; j <= n; ++j)
+                        if (close3(D(ref_patch(S, LD(i) / n, LD(j) / n)), p, 1e-12, 3)) {
+                            const V3L c = cross(ref_patch(S, LD(i) / n, LD(j) / n, 1, 0), ref_patch(S, LD(i) / n, LD(j) / n, 0, 1));
+                            INFO("vertex " << k << " = sample (" << i << ", " << j << "): normal expected "
+                                           << str(D((1 / norm(c)) * c)) << ", got " << str(m.normals[k]));
+                            CHECK(close3(m.normals[k], D((1 / norm(c)) * c), 1e-9));
+                        }
+            }
+            LD want_area = 0, got_area = 0;
+            auto g = [&](int i, int j) { return ref_patch(S, LD(i) / n, LD(j) / n); };
+            for (int i = 0; i < n; ++i)
+                for (int j = 0; j < n; ++j)
+                    want_area += norm(cross(g(i + 1, j) - g(i, j), g(i + 1, j + 1) - g(i, j))) / 2 +
+                                 norm(cross(g(i + 1, j + 1) - g(i, j), g(i, j + 1) - g(i, j))) / 2;
+            for (std::size_t f = 0; f < m.soup.n_faces(); ++f) {
+                const auto t = m.soup.face(f);
+                got_area += norm(cross(L(m.soup.positions[t[1]]) - L(m.soup.positions[t[0]]),
+                                       L(m.soup.positions[t[2]]) - L(m.soup.positions[t[0]]))) / 2;
+            }
+            INFO("total triangle area: expected " << double(want_area) << " (the two triangles of every grid cell), got "
+                                                  << double(got_area));
+            CHECK(std::abs(double(got_area - want_area)) <= 1e-10 * double(want_area));
             const PatchMesh fl = tessellate_patches({S}, n, 1e-9, true);
             REQUIRE(fl.soup.n_faces() == m.soup.n_faces());
             CHECK(fl.normals[0] == -m.normals[0]);
@@ -182,6 +218,10 @@ TEST_SUITE("Task 5: tensor-product patches") {
         CHECK(exact.soup.n_vertices() == std::size_t((2 * n + 1) * (n + 1)));
         CHECK_THROWS_AS(tessellate_patches({S}, 0, 1e-9, false), std::invalid_argument);
         CHECK_THROWS_AS(tessellate_patches({S}, 2, -1.0, false), std::invalid_argument);
+        BezierPatch high{30, 1, {}};  // degree 30 is allowed
+        for (int i = 0; i <= 30; ++i)
+            for (int j = 0; j <= 1; ++j) high.points.push_back({double(i), double(j), std::sin(i * 0.3)});
+        CHECK(tessellate_patches({high}, 2, 1e-9, false).soup.n_vertices() == 9);
     }
 }
 
