@@ -16,7 +16,8 @@ packages=(build-essential cmake ninja-build pkg-config git
           libcli11-dev libeigen3-dev libgmp-dev libbenchmark-dev libopenmesh-dev libopenvdb-dev libboost-dev libtbb-dev
           xvfb xauth zip unzip python3  # python3, xvfb: the demos test reads PNGs and opens a window
           clang-tools  # clang-query: the grader's source-level check of forbidden calls
-          tetgen)  # lab 02: tetrahedral meshes of the models (tools/fetch_models.sh)
+          tetgen  # lab 02: tetrahedral meshes of the models (tools/fetch_models.sh)
+          libfreetype-dev fonts-dejavu-core)  # lab 05: glyph outlines
 missing=()
 for p in "${packages[@]}"; do dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p"); done
 if [ ${#missing[@]} -gt 0 ]; then

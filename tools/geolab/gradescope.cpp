@@ -24,7 +24,8 @@ namespace {
 // autograder builds only geolab and the lab's test program.
 constexpr const char* kPackages =
     "build-essential cmake ninja-build pkg-config git unzip zip libglm-dev libglfw3-dev libosmesa6-dev libgl-dev "
-    "doctest-dev libstb-dev nlohmann-json3-dev libcli11-dev libeigen3-dev libgmp-dev clang-tools";
+    "doctest-dev libstb-dev nlohmann-json3-dev libcli11-dev libeigen3-dev libgmp-dev clang-tools "
+    "libfreetype-dev fonts-dejavu-core";
 
 // The shell test that every model file the tests load is in data/models/ (under "$1"); prints the missing ones.
 std::string missing_models_check(const std::vector<std::string>& models) {
