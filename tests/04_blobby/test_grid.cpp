@@ -37,8 +37,13 @@ TEST_SUITE("Task 3: fast evaluation") {
                            "with a too-small box (support radius off) loses samples.")) {
         Rng rng(61);
         for (Kernel k : {Kernel::nishimura, Kernel::wyvill})
-            for (double cell : {0.0, 0.15, 0.5}) {
-                const BlobScene s = random_scene(rng, k, 15);
+            for (double cell : {0.0, 0.15, 0.5, 1.0}) {
+                BlobScene s = random_scene(rng, k, 15);
+                if (cell == 1.0) {  // blobs on integer points, R = 1, cell 1: boxes end exactly on cell faces
+                    s.blobs.resize(4);
+                    const glm::dvec3 at[4] = {{0, 0, 0}, {5, 0, 0}, {0, 3, 1}, {2, 2, 4}};
+                    for (int i = 0; i < 4; ++i) s.blobs[i].center = at[i], s.blobs[i].radius = 1;
+                }
                 const BlobGrid g = build_blob_grid(s, cell);
                 const double c = g.cell;
                 REQUIRE_MESSAGE(g.cell_start.size() == std::size_t(g.dims.x) * g.dims.y * g.dims.z + 1,
@@ -88,6 +93,11 @@ TEST_SUITE("Task 3: fast evaluation") {
             CHECK_MESSAGE(g.dims[a] == std::max(1, int(std::ceil((hi[a] - lo[a]) / rmax))),
                           "axis " << a << ": dims should be ceil(extent / cell) = " << std::ceil((hi[a] - lo[a]) / rmax)
                                   << ", got " << g.dims[a]);
+        BlobScene one;
+        one.blobs.resize(1);
+        one.blobs[0].center = {0.25, -0.5, 1.0};
+        CHECK_MESSAGE(build_blob_grid(one, 5.0).dims == glm::ivec3(1), "one blob of R = 1, cell 5: dims (1, 1, 1)");
+        CHECK_MESSAGE(build_blob_grid(one, 0.0).dims == glm::ivec3(2), "one blob of R = 1, cell R: dims (2, 2, 2)");
         BlobScene b = s;
         b.kernel = Kernel::blinn;
         CHECK_THROWS_AS(build_blob_grid(b, 0.0), std::invalid_argument);
@@ -106,8 +116,20 @@ TEST_SUITE("Task 3: fast evaluation") {
                 const BlobScene s = random_scene(rng, k, 20);
                 const BlobGrid g = build_blob_grid(s, cell);
                 for (int m = 0; m < 300; ++m) {
-                    const glm::dvec3 p = rng.point(-2.2, 2.2);
+                    glm::dvec3 p = rng.point(-2.2, 2.2);
+                    if (m % 10 == 0) p[m % 3] = g.origin[m % 3];  // on the grid's lower faces: inside the grid
                     const FieldSample got = evaluate(s, g, p);
+                    // The blobs of p's cell (when p is in the grid): one evaluation each.
+                    const glm::dvec3 u = (p - g.origin) / g.cell;
+                    if (glm::all(glm::greaterThanEqual(u, glm::dvec3(0.0))) && glm::all(glm::lessThan(u, glm::dvec3(g.dims)))) {
+                        const glm::ivec3 c(glm::floor(u));
+                        const std::size_t n = c.x + std::size_t(g.dims.x) * (c.y + std::size_t(g.dims.y) * c.z);
+                        const std::uint64_t listed = g.cell_start[n + 1] - g.cell_start[n];
+                        CHECK_MESSAGE(got.kernel_evaluations == listed, "at " << str(p) << ": its cell lists " << listed
+                                                                              << " blobs, you counted " << got.kernel_evaluations);
+                    } else if (glm::any(glm::lessThan(u, glm::dvec3(0.0))) || glm::any(glm::greaterThan(u, glm::dvec3(g.dims)))) {
+                        CHECK_MESSAGE(got.kernel_evaluations == 0, "at " << str(p) << ", outside the grid: 0 evaluations");
+                    }
                     const double want = double(ref_value(s, p));
                     const glm::dvec3 gw = ref_gradient(s, p);
                     CHECK_MESSAGE(close(got.value, want, 1e-12, scale_of(s)),
@@ -183,9 +205,24 @@ TEST_SUITE("Task 3: fast evaluation") {
             if (k == Kernel::blinn)
                 CHECK_MESSAGE(evals == std::uint64_t(n.x) * n.y * n.z * s.blobs.size(),
                               "blinn: every blob at every sample, got " << evals);
-            else
+            else {
+                const BlobGrid g = build_blob_grid(s, 0.0);
+                std::uint64_t sum = 0;
+                for (int kk = 0; kk < n.z; ++kk)
+                    for (int j = 0; j < n.y; ++j)
+                        for (int i = 0; i < n.x; ++i) {
+                            const glm::dvec3 p = o + h * glm::dvec3(i, j, kk);
+                            const glm::dvec3 u = (p - g.origin) / g.cell;
+                            if (glm::any(glm::lessThan(u, glm::dvec3(0.0))) || glm::any(glm::greaterThan(u, glm::dvec3(g.dims)))) continue;
+                            const glm::ivec3 c = glm::min(glm::ivec3(glm::floor(u)), g.dims - 1);
+                            const std::size_t cn = c.x + std::size_t(g.dims.x) * (c.y + std::size_t(g.dims.y) * c.z);
+                            sum += g.cell_start[cn + 1] - g.cell_start[cn];
+                        }
+                CHECK_MESSAGE(evals == sum, str(k) << ": through build_blob_grid(scene, 0) the samples' cells list " << sum
+                                                   << " blobs in all; your total is " << evals);
                 CHECK_MESSAGE((evals > 0 && evals < std::uint64_t(n.x) * n.y * n.z * s.blobs.size()),
                               str(k) << ": the grid must save evaluations (total " << evals << ")");
+            }
         }
     }
 
@@ -197,6 +234,8 @@ TEST_SUITE("Task 3: fast evaluation") {
         CHECK_THROWS_AS(sample_lattice(s, glm::dvec3(0.0), -1.0, glm::ivec3(4), e), std::invalid_argument);
         CHECK_THROWS_AS(sample_lattice(s, glm::dvec3(0.0), 0.1, glm::ivec3(4, 1, 4), e), std::invalid_argument);
         CHECK_THROWS_AS(build_blob_grid(s, 1e-6), std::invalid_argument);
+        CHECK_MESSAGE(sample_lattice(s, glm::dvec3(0.0), 0.1, glm::ivec3(2, 3, 2), e).values.size() == 12,
+                      "n = (2, 3, 2) is the smallest lattice: 12 samples");
         BlobScene bad = s;
         bad.blobs[1].radius = 0;
         CHECK_THROWS_AS(build_blob_grid(bad, 0.0), std::invalid_argument);

@@ -184,6 +184,14 @@ TEST_SUITE("Task 4: marching cubes") {
         bad.n.y = 1;
         CHECK_THROWS_AS(marching_cubes(bad, 0.0), std::invalid_argument);
         bad = L;
+        bad.h = 0;
+        CHECK_THROWS_AS(marching_cubes(bad, 0.0), std::invalid_argument);
+        Lattice flat;
+        flat.n = glm::ivec3(1, 3, 3);
+        flat.values.assign(9, 1.0);
+        flat.gradients.assign(9, glm::dvec3(0.0));
+        CHECK_THROWS_AS(marching_cubes(flat, 0.0), std::invalid_argument);
+        bad = L;
         bad.values[7] = std::numeric_limits<double>::quiet_NaN();
         CHECK_THROWS_AS(marching_cubes(bad, 0.0), std::invalid_argument);
     }

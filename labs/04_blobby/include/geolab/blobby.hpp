@@ -135,8 +135,10 @@ struct Lattice {
     GEOLAB_FIELDS(origin, h, n, values, gradients)
 };
 
-//! The scene sampled on the lattice (values and gradients), through a BlobGrid for nishimura and wyvill (cost
-//! per sample independent of the number of blobs), every blob for blinn. kernel_evaluations gets the total.
+//! The scene sampled on the lattice (values and gradients): for nishimura and wyvill through
+//! build_blob_grid(scene, 0) and evaluate (cost per sample independent of the number of blobs), and
+//! kernel_evaluations gets the sum of evaluate's counts; for blinn through field, counting every blob at every
+//! sample (n.x·n.y·n.z·blobs).
 //! \throw std::invalid_argument when h ≤ 0, some n < 2, or more than 2²⁸ samples.
 Lattice sample_lattice(const BlobScene& scene, const glm::dvec3& origin, double h, const glm::ivec3& n,
                        std::uint64_t& kernel_evaluations);
