@@ -36,6 +36,9 @@ TEST_SUITE("Task 2: the field") {
                                                               << got);
             }
             CHECK_MESSAGE(field(s, b.center).value < 0, str(k) << ": the centre of a blob with b > T is inside (F < 0)");
+            const glm::dvec3 g0 = field(s, b.center).gradient;
+            CHECK_MESSAGE(g0 == glm::dvec3(0.0), str(k) << ": at the blob's centre (r = 0) the gradient is (0, 0, 0), got " << str(g0)
+                                                        << " (skip the term where r = 0: 0/0 is NaN)");
         }
     }
 

@@ -104,8 +104,15 @@ TEST_SUITE("Task 3: fast evaluation") {
         BlobScene e;
         const BlobGrid ge = build_blob_grid(e, 0.0);
         CHECK_MESSAGE(ge.dims == glm::ivec3(0), "a scene without blobs gives dims (0, 0, 0)");
-        const FieldSample fe = evaluate(e, ge, glm::dvec3(0.1));
-        CHECK_MESSAGE((fe.value == e.threshold && fe.kernel_evaluations == 0), "no blobs: F = T with 0 evaluations");
+        for (const glm::dvec3 p : {glm::dvec3(0.1), glm::dvec3(0.0)}) {
+            const FieldSample fe = evaluate(e, ge, p);
+            CHECK_MESSAGE((fe.value == e.threshold && fe.kernel_evaluations == 0), "no blobs, at " << str(p) << ": F = T with 0 evaluations");
+        }
+        BlobScene w = s;
+        const BlobGrid gw = build_blob_grid(w, 0.0);
+        const FieldSample at_centre = evaluate(w, gw, w.blobs[0].center);
+        CHECK_MESSAGE((std::isfinite(at_centre.gradient.x) && std::isfinite(at_centre.gradient.y) && std::isfinite(at_centre.gradient.z)), "at a blob's centre the gradient must be finite (skip r = 0), got "
+                                                                      << str(at_centre.gradient));
     }
 
     TEST_CASE("grid: evaluate equals field everywhere; inside and outside the grid" * geolab::points(3) *
@@ -118,11 +125,12 @@ TEST_SUITE("Task 3: fast evaluation") {
                 for (int m = 0; m < 300; ++m) {
                     glm::dvec3 p = rng.point(-2.2, 2.2);
                     if (m % 10 == 0) p[m % 3] = g.origin[m % 3];  // on the grid's lower faces: inside the grid
+                    if (m % 10 == 5) p[m % 3] = g.origin[m % 3] + g.cell * g.dims[m % 3];  // upper faces: inside too
                     const FieldSample got = evaluate(s, g, p);
                     // The blobs of p's cell (when p is in the grid): one evaluation each.
                     const glm::dvec3 u = (p - g.origin) / g.cell;
-                    if (glm::all(glm::greaterThanEqual(u, glm::dvec3(0.0))) && glm::all(glm::lessThan(u, glm::dvec3(g.dims)))) {
-                        const glm::ivec3 c(glm::floor(u));
+                    if (glm::all(glm::greaterThanEqual(u, glm::dvec3(0.0))) && glm::all(glm::lessThanEqual(u, glm::dvec3(g.dims)))) {
+                        const glm::ivec3 c = glm::min(glm::ivec3(glm::floor(u)), g.dims - 1);
                         const std::size_t n = c.x + std::size_t(g.dims.x) * (c.y + std::size_t(g.dims.y) * c.z);
                         const std::uint64_t listed = g.cell_start[n + 1] - g.cell_start[n];
                         CHECK_MESSAGE(got.kernel_evaluations == listed, "at " << str(p) << ": its cell lists " << listed
@@ -233,6 +241,8 @@ TEST_SUITE("Task 3: fast evaluation") {
         CHECK_THROWS_AS(sample_lattice(s, glm::dvec3(0.0), 0.0, glm::ivec3(4), e), std::invalid_argument);
         CHECK_THROWS_AS(sample_lattice(s, glm::dvec3(0.0), -1.0, glm::ivec3(4), e), std::invalid_argument);
         CHECK_THROWS_AS(sample_lattice(s, glm::dvec3(0.0), 0.1, glm::ivec3(4, 1, 4), e), std::invalid_argument);
+        CHECK_THROWS_AS(sample_lattice(s, glm::dvec3(0.0), 0.1, glm::ivec3(1, 4, 4), e), std::invalid_argument);
+        CHECK_THROWS_AS(sample_lattice(s, glm::dvec3(0.0), 0.1, glm::ivec3(4, 4, 1), e), std::invalid_argument);
         CHECK_THROWS_AS(build_blob_grid(s, 1e-6), std::invalid_argument);
         CHECK_MESSAGE(sample_lattice(s, glm::dvec3(0.0), 0.1, glm::ivec3(2, 3, 2), e).values.size() == 12,
                       "n = (2, 3, 2) is the smallest lattice: 12 samples");

@@ -186,11 +186,22 @@ TEST_SUITE("Task 4: marching cubes") {
         bad = L;
         bad.h = 0;
         CHECK_THROWS_AS(marching_cubes(bad, 0.0), std::invalid_argument);
-        Lattice flat;
-        flat.n = glm::ivec3(1, 3, 3);
-        flat.values.assign(9, 1.0);
-        flat.gradients.assign(9, glm::dvec3(0.0));
-        CHECK_THROWS_AS(marching_cubes(flat, 0.0), std::invalid_argument);
+        for (const glm::ivec3 fn : {glm::ivec3(1, 3, 3), glm::ivec3(3, 1, 3), glm::ivec3(3, 3, 1)}) {
+            Lattice flat;
+            flat.n = fn;
+            flat.values.assign(9, 1.0);
+            flat.gradients.assign(9, glm::dvec3(0.0));
+            CHECK_THROWS_AS(marching_cubes(flat, 0.0), std::invalid_argument);
+        }
+        bad = L;
+        bad.values[0] = std::numeric_limits<double>::quiet_NaN();
+        CHECK_THROWS_AS(marching_cubes(bad, 0.0), std::invalid_argument);
+        // Zero gradients give zero normals, not NaN.
+        Lattice zero = L;
+        for (auto& g : zero.gradients) g = glm::dvec3(0.0);
+        const McMesh mz = marching_cubes(zero, iso);
+        for (const glm::dvec3& nz : mz.normals)
+            CHECK_MESSAGE(nz == glm::dvec3(0.0), "a zero interpolated gradient gives the normal (0, 0, 0), got " << str(nz));
         bad = L;
         bad.values[7] = std::numeric_limits<double>::quiet_NaN();
         CHECK_THROWS_AS(marching_cubes(bad, 0.0), std::invalid_argument);
