@@ -19,7 +19,7 @@ Profile clip_to_axis(const Profile& p) {
     Loop out;
     const std::size_t n = p.outer.size();
     for (std::size_t i = 0; i < n; ++i) {
-        const glm::dvec2 a = p.outer[i], b = p.outer[(i + 1) % n];
+        const glm::dvec2 a = p.outer[(i + n - 1) % n], b = p.outer[i];  // the edge into point i: keeps the order
         const bool ain = a.x >= 0, bin = b.x >= 0;
         if (ain != bin) out.push_back({0.0, a.y + (b.y - a.y) * (0.0 - a.x) / (b.x - a.x)});
         if (bin) out.push_back(b);

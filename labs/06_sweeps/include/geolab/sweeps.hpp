@@ -120,8 +120,9 @@ PolygonSoup extrude(const Profile& p, const ExtrudeOptions& options);
 // ==== Task 4: revolution (handout §5) =========================================================================
 
 //! The part of the profile with x ≥ 0 (the axis is x = 0): each loop is clipped to the half-plane (Sutherland–
-//! Hodgman), points that become consecutive duplicates are dropped. A profile entirely in x ≥ 0 comes back
-//! unchanged. \throw std::invalid_argument when nothing is left (area 0), when a hole reaches x ≤ 0, or when the
+//! Hodgman, visiting the edges into points 0, 1, 2, ... so that kept points keep their order and index 0 stays
+//! first when it is kept); points that become consecutive duplicates are dropped. A profile entirely in x ≥ 0
+//! comes back unchanged. \throw std::invalid_argument when nothing is left (area 0), when a hole reaches x ≤ 0, or when the
 //! input profile is invalid.
 Profile clip_to_axis(const Profile& p);
 
@@ -138,7 +139,8 @@ struct RevolveOptions {
 //! revolution (the seam φ = 2π is the ring at φ = 0, shared, not repeated) and j = 0..segments for a partial one.
 //! Edges on the axis make no faces; an edge with one end on the axis makes one triangle per segment. A partial
 //! revolution is closed by the two caps (the clipped profile's triangulation at φ = 0 and at φ = angle).
-//! Outward oriented, no zero-area triangle.
+//! Outward oriented, no zero-area triangle. A full revolution gives one closed surface per loop that does not
+//! lie on the axis (a loop touching the axis: sphere-like; one away from it, or a hole: torus-like).
 //! \throw std::invalid_argument when segments < 3, angle ≤ 0 or > 2π (a full revolution is |angle − 2π| ≤ 1e-12),
 //!        or as clip_to_axis.
 PolygonSoup revolve(const Profile& p, const RevolveOptions& options);
@@ -176,7 +178,8 @@ RmfResult rotation_minimizing_frames(const Path& path, const glm::dvec3& initial
 //! The profile carried along the path by the frames: point (u, v) at sample i is pointsᵢ + u·Nᵢ + v·Bᵢ.
 //! Vertices sample by sample (sample i holds profile_points in order). Open path: side walls between consecutive
 //! samples and the two caps (facing −T₀ at the start and +T at the end). Closed path: the last sample joins the
-//! first, no caps (a torus-like solid; genus 1 + number of holes). Outward oriented as extrude (which is this
+//! first, no caps (each loop gives one torus-like surface: the outer loop's bounds a solid torus, each hole's a
+//! tunnel through it; χ = 0 and 1 + holes components). Outward oriented as extrude (which is this
 //! sweep along a straight path with T = z, N = x, B = y).
 //! \throw std::invalid_argument for an invalid profile, frames.size() ≠ points.size(), or fewer than 2 samples
 //!        (3 for a closed path).
@@ -188,7 +191,7 @@ PolygonSoup sweep(const Profile& p, const Path& path, const std::vector<Frame>& 
 struct SweepCheck {
     double profile_radius = 0.0;
     double min_radius_of_curvature = 0.0;  //!< +infinity for a straight path
-    std::uint32_t at_sample = 0;           //!< the middle sample of the tightest three
+    std::uint32_t at_sample = 0;           //!< the middle sample of the tightest three (the first on a tie)
     bool self_intersects = false;          //!< profile_radius ≥ min_radius_of_curvature
     GEOLAB_FIELDS(profile_radius, min_radius_of_curvature, at_sample, self_intersects)
 };
