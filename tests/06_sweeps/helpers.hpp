@@ -285,24 +285,31 @@ struct Fourier {
     Deriv deriv() const {
         return [this](LD t, V3L& d1, V3L& d2) { d1 = d(t, 1), d2 = d(t, 2); };
     }
-    // n samples over [0, 2π·frac] (closed when frac = 1 and closed = true), exact unit tangents.
+    // The point (order 0) or a derivative in double: the inputs the tests pass are computed in double only, so that
+    // the program that runs your code and the judge build bit-identical inputs.
+    glm::dvec3 dd(double t, int order) const {
+        glm::dvec3 s(0.0);
+        for (int k = 1; k <= 3; ++k) {
+            const double c = std::cos(k * t), sn = std::sin(k * t);
+            if (order == 0) s += c * a[k - 1] + sn * b[k - 1];
+            else s += double(k) * (-sn * a[k - 1] + c * b[k - 1]);
+        }
+        return s;
+    }
+    // n samples over [0, 2π) (closed) or [0, π] (open), with exact unit tangents.
     Path path(int n, bool closed) const {
         Path p;
         p.closed = closed;
         for (int i = 0; i < n; ++i) {
-            const LD t = closed ? 2 * (LD)pi * i / n : 2 * (LD)pi * i / (n - 1) * 0.5L;
-            p.points.push_back(to_glm(d(t, 0)));
-            const V3L d1 = d(t, 1);
-            p.tangents.push_back(to_glm((1 / std::sqrt(dot(d1, d1))) * d1));
+            const double t = closed ? 2 * pi * i / n : pi * i / (n - 1);
+            p.points.push_back(dd(t, 0));
+            p.tangents.push_back(glm::normalize(dd(t, 1)));
         }
         return p;
     }
-    LD min_speed() const {
-        LD m = 1e30L;
-        for (int i = 0; i < 2000; ++i) {
-            const V3L d1 = d(2 * (LD)pi * i / 2000, 1);
-            m = std::min(m, std::sqrt(dot(d1, d1)));
-        }
+    double min_speed() const {
+        double m = 1e300;
+        for (int i = 0; i < 2000; ++i) m = std::min(m, glm::length(dd(2 * pi * i / 2000, 1)));
         return m;
     }
 };

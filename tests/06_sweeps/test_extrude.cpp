@@ -12,7 +12,7 @@ glm::dvec3 layer_point(glm::dvec2 q, const ExtrudeOptions& o, int k) {
 }  // namespace
 
 TEST_SUITE("Task 3: extrusion") {
-    TEST_CASE("extrude: the 4×4 square with a 2×2 hole, height 1: V = 12, A = 48, closed, genus 1" * geolab::points(3) *
+    TEST_CASE("extrude: the 4×4 square with a 2×2 hole; height 1: V = 12; A = 48; closed; genus 1" * geolab::points(3) *
               geolab::hint("Side walls: two triangles per loop edge a→b and step, (a₀, b₀, b₁) and (a₀, b₁, a₁); caps from "
                            "triangulate, the bottom one reversed (handout §4).")) {
         const Profile p = square_with_hole();
@@ -27,7 +27,7 @@ TEST_SUITE("Task 3: extrusion") {
         CHECK_MESSAGE(m.n_vertices() == 16, "expected 16 vertices (8 profile points × 2 layers), got " << m.n_vertices());
     }
 
-    TEST_CASE("extrude: vertices layer by layer, scaled, turned and moved as the contract says" * geolab::points(2) *
+    TEST_CASE("extrude: vertices layer by layer; scaled; turned and moved as the contract says" * geolab::points(2) *
               geolab::hint("Layer k at s = k/steps: scale by 1 + s(scale − 1), turn by s·twist about z, then add "
                            "s·direction; profile_points order inside a layer.")) {
         Rng rng(81);
@@ -54,7 +54,7 @@ TEST_SUITE("Task 3: extrusion") {
         }
     }
 
-    TEST_CASE("extrude: twist and scale give closed, oriented solids without self-intersections" * geolab::points(3) *
+    TEST_CASE("extrude: twist and scale give closed; oriented solids without self-intersections" * geolab::points(3) *
               geolab::hint("With the walls' triangles as in the contract and twist per step below 90° no triangle flips; "
                            "check your caps' winding and your wall diagonals.")) {
         Rng rng(82);
@@ -93,7 +93,7 @@ TEST_SUITE("Task 3: extrusion") {
         }
     }
 
-    TEST_CASE("extrude: a scaled prism is a frustum, V = A·h·(1 + s + s²)/3, twist keeps the cross-section area" *
+    TEST_CASE("extrude: a scaled prism is a frustum; V = A·h·(1 + s + s²)/3; twist keeps the cross-section area" *
               geolab::points(2) * geolab::hint("Scale about the origin before moving; the caps are the scaled profile.")) {
         Rng rng(83);
         for (int n = 0; n < 6; ++n) {
@@ -106,7 +106,7 @@ TEST_SUITE("Task 3: extrusion") {
         }
     }
 
-    TEST_CASE("extrude: the caps face outward, the bottom −z and the top +z" * geolab::points(2) *
+    TEST_CASE("extrude: the caps face outward; the bottom −z and the top +z" * geolab::points(2) *
               geolab::hint("The triangulation is counter-clockwise seen from +z: keep it for the top, reverse it for the "
                            "bottom.")) {
         const Profile p = square_with_hole();

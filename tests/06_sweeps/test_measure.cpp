@@ -63,7 +63,7 @@ TEST_SUITE("Task 7: measures") {
         }
     }
 
-    TEST_CASE("mesh_area: boxes, quads, a regular polygon's fan" * geolab::points(1) *
+    TEST_CASE("mesh_area: boxes; quads; a regular polygon's fan" * geolab::points(1) *
               geolab::hint("Σ |(b − a) × (c − a)| / 2 over the fan triangles of each face.")) {
         Rng rng(122);
         for (int k = 0; k < 8; ++k) {

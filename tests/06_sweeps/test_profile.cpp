@@ -21,7 +21,7 @@ void expect_rejected(const Profile& p, const std::string& why, const std::string
 }  // namespace
 
 TEST_SUITE("Task 1: profiles") {
-    TEST_CASE("signed_area: squares, triangles and random star polygons; positive counter-clockwise" *
+    TEST_CASE("signed_area: squares; triangles and random star polygons; positive counter-clockwise" *
               geolab::points(2) *
               geolab::hint("Shoelace: ½ Σ (xᵢ yᵢ₊₁ − xᵢ₊₁ yᵢ), the last point joined to the first (handout §2).")) {
         CHECK_MESSAGE(signed_area(rectangle_loop(0, 0, 4, 3)) == doctest::Approx(12.0),
@@ -40,7 +40,7 @@ TEST_SUITE("Task 1: profiles") {
         }
     }
 
-    TEST_CASE("validate_profile: valid profiles pass (convex, star-shaped, with one and several holes)" *
+    TEST_CASE("validate_profile: valid profiles pass (convex; star-shaped; with one and several holes)" *
               geolab::points(2) *
               geolab::hint("Accept an outer loop that is counter-clockwise and holes that are clockwise, strictly inside "
                            "and apart; use exact orient2d (geolab/predicates.hpp) for the intersection tests.")) {
@@ -54,7 +54,7 @@ TEST_SUITE("Task 1: profiles") {
         }
     }
 
-    TEST_CASE("validate_profile: a loop with the wrong orientation is rejected, the outer loop and each hole" *
+    TEST_CASE("validate_profile: a loop with the wrong orientation is rejected; the outer loop and each hole" *
               geolab::points(2) *
               geolab::hint("The outer loop must have positive signed area, every hole negative: check EVERY loop's sign "
                            "and say 'wrong orientation' (handout §2).")) {
@@ -72,7 +72,7 @@ TEST_SUITE("Task 1: profiles") {
         expect_rejected({reversed(circle_loop({0, 0}, 1, 9)), {}}, "a clockwise circle", "orientation");
     }
 
-    TEST_CASE("validate_profile: self-intersecting, degenerate and non-finite loops are rejected" * geolab::points(2) *
+    TEST_CASE("validate_profile: self-intersecting; degenerate and non-finite loops are rejected" * geolab::points(2) *
               geolab::hint("Test every pair of non-adjacent edges with exact orient2d, including touching (a vertex on an "
                            "edge); also fewer than 3 points, equal consecutive points, NaN or inf, zero area.")) {
         expect_rejected({Loop{{0, 0}, {2, 2}, {2, 0}, {0, 2}}, {}}, "a bow tie", "intersect");
@@ -87,7 +87,7 @@ TEST_SUITE("Task 1: profiles") {
         expect_rejected(p, "a self-intersecting hole", "hole 0");
     }
 
-    TEST_CASE("validate_profile: holes outside, crossing, touching or nested are rejected" * geolab::points(1) *
+    TEST_CASE("validate_profile: holes outside; crossing; touching or nested are rejected" * geolab::points(1) *
               geolab::hint("A hole must lie strictly inside the outer loop and apart from every other hole: no edge of "
                            "one loop may meet an edge of another, and no hole may lie inside another.")) {
         Profile p = square_with_hole();

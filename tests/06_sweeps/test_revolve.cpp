@@ -34,7 +34,7 @@ std::size_t poles(const PolygonSoup& m) {
 }  // namespace
 
 TEST_SUITE("Task 4: revolution") {
-    TEST_CASE("revolve: the issue's square with a hole at offset 2 — V → 48π, A → 96π (Pappus), closed" *
+    TEST_CASE("revolve: the issue's square with a hole at offset 2 — V → 48π; A → 96π (Pappus); closed" *
               geolab::points(3) *
               geolab::hint("(r, z) ↦ (r cos φ, r sin φ, z); the outer edge on the axis makes no faces; a point on the "
                            "axis is one pole vertex; the outer loop gives a sphere-like surface, the hole a torus "
@@ -43,15 +43,13 @@ TEST_SUITE("Task 4: revolution") {
         for (int m : {16, 64, 512}) {
             const PolygonSoup mesh = revolve(p, {m, 2 * pi});
             INFO("input: " << str(p) << " revolved fully in " << m << " segments");
-            const double V = double(volume_ld(mesh)), A = double(mesh_area(mesh)),
-                         wantV = double(poly_volume(p, m, 2 * pi)), wantA = double(poly_area(p, m, 2 * pi, false));
+            const double V = double(volume_ld(mesh)), wantV = double(poly_volume(p, m, 2 * pi)), wantA = double(poly_area(p, m, 2 * pi, false));
             CHECK_MESSAGE(close(V, wantV, 1e-11), "volume: expected " << wantV << " (the polyhedron; 48π = " << 48 * pi
                                                                       << " in the limit), got " << V);
             LD area = 0;
             for (std::size_t f = 0; f < mesh.n_faces(); ++f) area += glm::length(tri_normal(mesh, f)) / 2;
             CHECK_MESSAGE(close(double(area), wantA, 1e-11),
                           "area: expected " << wantA << " (96π = " << 96 * pi << " in the limit), got " << double(area));
-            (void)A;
             const std::string bad = surface_problem(mesh, 2, 2, m <= 64);
             CHECK_MESSAGE(bad.empty(), "expected a sphere-like outer surface and a torus inside (χ = 2, 2 components):" << bad);
             CHECK_MESSAGE(mesh.n_vertices() == 2 + 6 * std::size_t(m),
@@ -61,7 +59,7 @@ TEST_SUITE("Task 4: revolution") {
         CHECK_MESSAGE(close(double(volume_ld(fine)), 48 * pi, 1e-5), "4096 segments: volume should be 48π to 1e-5");
     }
 
-    TEST_CASE("revolve: a full revolution shares its seam (no duplicated ring, no boundary)" * geolab::points(2) *
+    TEST_CASE("revolve: a full revolution shares its seam (no duplicated ring; no boundary)" * geolab::points(2) *
               geolab::hint("For a full turn the ring has `segments` vertices and the last segment joins back to ring "
                            "index 0: never add a ring at φ = 2π.")) {
         Rng rng(91);
@@ -171,7 +169,7 @@ TEST_SUITE("Task 4: revolution") {
         CHECK_MESSAGE((same.outer == inside.outer && same.holes == inside.holes), "a profile at x > 0 comes back unchanged");
     }
 
-    TEST_CASE("revolve, clip_to_axis: bad input is rejected" * geolab::points(1) *
+    TEST_CASE("revolve; clip_to_axis: bad input is rejected" * geolab::points(1) *
               geolab::hint("std::invalid_argument for segments < 3, angle ≤ 0 or > 2π, a hole reaching the axis, a "
                            "profile with nothing at x ≥ 0, an invalid profile.")) {
         const Profile p = issue_profile();

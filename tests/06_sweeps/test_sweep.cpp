@@ -28,7 +28,7 @@ Path ring_path(double R, int n) {
 }  // namespace
 
 TEST_SUITE("Task 6: sweeps") {
-    TEST_CASE("sweep: along a straight path it is the extrusion (positions, closed, V = A·h)" * geolab::points(2) *
+    TEST_CASE("sweep: along a straight path it is the extrusion (positions; closed; V = A·h)" * geolab::points(2) *
               geolab::hint("Point (u, v) of sample i is pointsᵢ + u·Nᵢ + v·Bᵢ; walls as in extrude; caps facing −T₀ "
                            "and +T at the end (handout §7).")) {
         Rng rng(111);
@@ -78,7 +78,7 @@ TEST_SUITE("Task 6: sweeps") {
         }
     }
 
-    TEST_CASE("sweep: the trefoil knot with rotation-minimizing frames, closed and without self-intersections" *
+    TEST_CASE("sweep: the trefoil knot with rotation-minimizing frames; closed and without self-intersections" *
               geolab::points(3) *
               geolab::hint("Use rotation_minimizing_frames' distributed frames so the tube closes; the volume of a thin "
                            "tube is about the profile's area times the path's length.")) {
@@ -156,7 +156,7 @@ TEST_SUITE("Task 6: sweeps") {
         CHECK_MESSAGE(!t.self_intersects, "0.6 < √17/2: no self-intersection reported");
     }
 
-    TEST_CASE("sweep, check_sweep: bad input is rejected" * geolab::points(1) *
+    TEST_CASE("sweep; check_sweep: bad input is rejected" * geolab::points(1) *
               geolab::hint("std::invalid_argument for an invalid profile, a frame count that differs from the samples, "
                            "too few samples.")) {
         const Path path = helix_path(1, 1, 1, 10);
