@@ -135,6 +135,10 @@ TEST_SUITE("Task 3: extrusion") {
         CHECK_THROWS_AS(extrude(p, {{0, 0, 1}, 1, 0, 0}), std::invalid_argument);
         CHECK_THROWS_AS(extrude(p, {{0, 0, 1}, 2, 3.2, 1}), std::invalid_argument);
         CHECK_THROWS_AS(extrude(p, {{0, 0, NAN}, 1, 0, 1}), std::invalid_argument);
+        CHECK_THROWS_AS(extrude(p, {{NAN, 0, 1}, 1, 0, 1}), std::invalid_argument);
+        CHECK_THROWS_AS(extrude(p, {{0, INFINITY, 1}, 1, 0, 1}), std::invalid_argument);
+        CHECK_THROWS_AS(extrude(p, {{0, 0, 1}, 1, NAN, 1}), std::invalid_argument);
+        CHECK_THROWS_AS(extrude(p, {{0, 0, 1}, 1, 0, INFINITY}), std::invalid_argument);
         Profile q = p;
         q.holes[0] = reversed(q.holes[0]);
         CHECK_THROWS_AS(extrude(q, {}), std::invalid_argument);

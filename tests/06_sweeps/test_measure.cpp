@@ -50,6 +50,12 @@ TEST_SUITE("Task 7: measures") {
         for (auto f : {std::array<std::uint32_t, 3>{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}}) t.add_face({f[0], f[1], f[2]});
         CHECK_MESSAGE(close(mesh_volume(t), 1.0 / 6, 1e-15), "unit corner tetrahedron: expected 1/6, got " << mesh_volume(t));
         CHECK_MESSAGE(mesh_volume(PolygonSoup{}) == 0.0, "an empty mesh has volume 0");
+        // An open mesh (one triangle that does not use vertex 0): the sum taken about the FIRST vertex, as the contract says.
+        PolygonSoup open;
+        open.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+        open.add_face({1, 2, 3});
+        CHECK_MESSAGE(close(mesh_volume(open), 1.0 / 6, 1e-15), "one triangle (1, 0, 0) (0, 1, 0) (0, 0, 1) about vertex 0 "
+                                                                 "(0, 0, 0): expected 1/6, got " << mesh_volume(open));
     }
 
     TEST_CASE("mesh_volume: far from the origin (coordinates ~1e6) the volume keeps its digits" * geolab::points(1) *

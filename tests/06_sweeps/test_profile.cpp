@@ -97,6 +97,8 @@ TEST_SUITE("Task 1: profiles") {
         expect_rejected(p, "a hole crossing the outer loop", "hole 0");
         p.holes[0] = reversed(rectangle_loop(0, 0, 2, 1));
         expect_rejected(p, "a hole touching the outer loop along an edge", "hole 0");
+        p.holes[0] = reversed(rectangle_loop(-1, -3, 1, -1));
+        expect_rejected(p, "a hole crossing the outer loop's first edge (its first vertex inside)", "hole 0");
         Profile q{rectangle_loop(-4, -4, 4, 4), {reversed(rectangle_loop(-3, -3, 3, 3)), reversed(rectangle_loop(-1, -1, 1, 1))}};
         expect_rejected(q, "a hole inside another hole", "hole 1");
         Profile r{rectangle_loop(-4, -4, 4, 4), {reversed(rectangle_loop(-3, -1, 1, 1)), reversed(rectangle_loop(0, -2, 2, 2))}};

@@ -164,6 +164,11 @@ TEST_SUITE("Task 4: revolution") {
                 if (q.x > 0) CHECK_MESSAGE(std::find(a.outer.begin(), a.outer.end(), q) != a.outer.end(),
                                            "the point " << str(q) << " (x > 0) is missing from the clipped loop");
         }
+        const Profile cone{Loop{{0, 0}, {1.5, 0}, {0, 2}}, {}};  // three points, two on the axis: a cone
+        const PolygonSoup cm = revolve(cone, {20, 2 * pi});
+        CHECK_MESSAGE(surface_problem(cm, 2, 1).empty(), "a right triangle on the axis revolves to a closed cone: "
+                                                             << surface_problem(cm, 2, 1));
+        CHECK_MESSAGE(close(double(volume_ld(cm)), double(poly_volume(cone, 20, 2 * pi)), 1e-11), "cone volume");
         const Profile inside = square_with_hole({3, 0});
         const Profile same = clip_to_axis(inside);
         CHECK_MESSAGE((same.outer == inside.outer && same.holes == inside.holes), "a profile at x > 0 comes back unchanged");

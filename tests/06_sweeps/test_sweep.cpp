@@ -34,7 +34,7 @@ TEST_SUITE("Task 6: sweeps") {
         Rng rng(111);
         for (int k = 0; k < 5; ++k) {
             const Profile p = star_with_holes(rng, rng.integer(4, 15), k % 3);
-            const int ns = rng.integer(2, 7);
+            const int ns = k == 0 ? 2 : rng.integer(2, 7);  // two samples: one step
             std::vector<glm::dvec3> pts;
             for (int i = 0; i < ns; ++i) pts.push_back({0, 0, 0.5 * i});
             const Path path = polyline_path(pts, false);
@@ -154,6 +154,17 @@ TEST_SUITE("Task 6: sweeps") {
         CHECK_MESSAGE(t.at_sample == 1, "the tightest turn of (0,0,0) (4,0,0) (4,1,0) (8,1,0) is at sample 1 (tie: the first), got " << t.at_sample);
         CHECK_MESSAGE(close(t.min_radius_of_curvature, std::sqrt(17.0) / 2, 1e-12), "its circumradius is √17/2, got " << t.min_radius_of_curvature);
         CHECK_MESSAGE(!t.self_intersects, "0.6 < √17/2: no self-intersection reported");
+        pts = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {2, 1, 0}};
+        const SweepCheck u = check_sweep({circle_loop({0, 0}, 0.6, 8), {}}, polyline_path(pts, false));
+        CHECK_MESSAGE(close(u.min_radius_of_curvature, std::sqrt(0.5), 1e-12), "(0,0,0) (1,0,0) (1,1,0) (2,1,0): the "
+                                                                               "circumradius √2/2 at sample 1, got " << u.min_radius_of_curvature);
+        // A closed path whose sharpest corner is sample 0 (wrapping: samples n−1, 0, 1).
+        pts = {{0, 0, 0}, {0.5, 0.5, 0}, {3, 0.5, 0}, {3, -3, 0}, {-3, -3, 0}, {-3, 0.5, 0}, {-0.5, 0.5, 0}};
+        const SweepCheck w = check_sweep({circle_loop({0, 0}, 0.1, 8), {}}, polyline_path(pts, true));
+        CHECK_MESSAGE((w.at_sample == 0 && close(w.min_radius_of_curvature, 0.5, 1e-12)),
+                      "the closed path (0,0,0) (0.5,0.5,0) (3,0.5,0) (3,−3,0) (−3,−3,0) (−3,0.5,0) (−0.5,0.5,0) turns sharpest "
+                      "at sample 0 (circumradius 0.5 with samples 6 and 1), got sample " << w.at_sample << ", radius "
+                                                                                        << w.min_radius_of_curvature);
     }
 
     TEST_CASE("sweep; check_sweep: bad input is rejected" * geolab::points(1) *
