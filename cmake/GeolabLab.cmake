@@ -53,7 +53,7 @@ function(geolab_add_lab lab)
   file(GLOB student_src CONFIGURE_DEPENDS ${lab_dir}/src/*.cpp)
   add_library(lab_${nn} STATIC ${student_src})
   target_include_directories(lab_${nn} PUBLIC ${lab_dir}/include)
-  target_link_libraries(lab_${nn} PUBLIC geolab::core)
+  target_link_libraries(lab_${nn} PUBLIC geolab::core geolab::checks)  # checks: exact predicates a lab may use
   # Stubs throw before using their parameters: keep students' warnings about their own code only.
   target_compile_options(lab_${nn} PRIVATE -Wall -Wextra -Wno-unused-parameter -Wno-unused-variable
                                            -Wno-unused-function -Wno-unused-but-set-variable)
@@ -133,7 +133,7 @@ function(geolab_add_lab lab)
     file(GLOB sol_src CONFIGURE_DEPENDS ${sol_dir}/src/*.cpp)
     add_library(lab_${nn}_sol STATIC ${sol_src})
     target_include_directories(lab_${nn}_sol PUBLIC ${lab_dir}/include)
-    target_link_libraries(lab_${nn}_sol PUBLIC geolab::core)
+    target_link_libraries(lab_${nn}_sol PUBLIC geolab::core geolab::checks)
     target_compile_options(lab_${nn}_sol PRIVATE -Wall -Wextra)
     if(NOT api_header)
       add_executable(test_${lab}_solution ${test_src})

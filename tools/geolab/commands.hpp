@@ -37,5 +37,6 @@ void add_table1(CLI::App& app, int& status);
 void add_mutate(CLI::App& app, int& status);
 void add_quadric(CLI::App& app, int& status);
 void add_blobby(CLI::App& app, int& status);
+void add_sweep(CLI::App& app, int& status);
 
 }  // namespace geolab::cli

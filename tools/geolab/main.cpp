@@ -52,6 +52,7 @@ int main(int argc, char** argv) {
     geolab::cli::add_mutate(app, status);
     geolab::cli::add_quadric(app, status);
     geolab::cli::add_blobby(app, status);
+    geolab::cli::add_sweep(app, status);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
