@@ -271,6 +271,9 @@ TEST_SUITE("Task 3: point membership") {
             CHECK_MESSAGE(classify(t, z, 1e-9) == Membership::on, "on the subtracted sphere: got " << str(classify(t, z, 1e-9)));
         }
         CHECK_THROWS_AS(classify(leaf(Shape::sphere, {1, 0, 0}), glm::dvec3(0.0), -1.0), std::invalid_argument);
+        CHECK_MESSAGE(classify(leaf(Shape::sphere, {1, 0, 0}), glm::dvec3(0.0), 0.0) == Membership::in,
+                      "rel_tol = 0 is allowed (only exact zeros are on)");
+        CHECK(classify(leaf(Shape::sphere, {1, 0, 0}), glm::dvec3(1, 0, 0), 0.0) == Membership::on);
     }
 
     TEST_CASE("classify: the three-valued rules at shared faces (touching union; equal subtraction)" *

@@ -46,7 +46,7 @@ TEST_SUITE("Task 7: meshes and volumes") {
     }
 
     TEST_CASE("mesh_tree: two unit cubes offset by 0.5 — union 1.875; intersection 0.125; difference 0.875" *
-              geolab::points(4) *
+              geolab::points(3) *
               geolab::hint("Polygonize sdf() over bounds(t) grown by 5% of its diagonal (so the mesh is closed), then "
                            "volume(). The cubes' faces are planes: linear interpolation along lattice edges finds them "
                            "exactly; only edges and corners are cut.")) {
@@ -83,7 +83,36 @@ TEST_SUITE("Task 7: meshes and volumes") {
             last = err;
         }
         CHECK(last < 0.01);
-        CHECK_THROWS_AS(mesh_tree(octahedron(1.0) , 0), std::invalid_argument);
+        CHECK_THROWS_AS(mesh_tree(octahedron(1.0), 0), std::invalid_argument);
+        CHECK_THROWS_AS(mesh_tree(leaf(Shape::sphere, {1, 0, 0}), 1), std::invalid_argument);
         CHECK_THROWS_AS(mesh_tree(leaf(Shape::halfspace, glm::dvec3(0)), 16), std::invalid_argument);
+    }
+
+    TEST_CASE("mesh_tree: the lattice is bounds(t) grown by 5% of its diagonal; resolution cells on the longest side" *
+              geolab::points(1) *
+              geolab::hint("Box b = bounds(t); pad = 0.05·|b.hi − b.lo|; polygonize(field, {b.lo − pad, b.hi + pad}, "
+                           "resolution).")) {
+        const Tree t = leaf(Shape::box, {1.0, 0.6, 0.4}, translate({0.3, -0.2, 0.1}));
+        const int res = 10;
+        const glm::dvec3 lo(-0.7, -0.8, -0.3), hi(1.3, 0.4, 0.5);
+        const double pad = 0.05 * glm::length(hi - lo);
+        const glm::dvec3 L = lo - pad;
+        const double h = (hi.x - lo.x + 2 * pad) / res;
+        const PolygonSoup m = mesh_tree(t, res);
+        REQUIRE(m.n_vertices() > 0);
+        // Every edge of the Freudenthal split joins lattice points i and i + e, e ∈ {0, 1}³: a vertex's lattice
+        // coordinates u = (p − lo')/h have fractional parts that are 0 or all equal (the edge parameter).
+        for (const glm::dvec3& p : m.positions) {
+            std::vector<double> fr;
+            for (int k = 0; k < 3; ++k) {
+                const double u = (p[k] - L[k]) / h;
+                if (std::abs(u - std::round(u)) > 1e-6) fr.push_back(u - std::floor(u));
+            }
+            bool ok = !fr.empty() && fr.size() < 3 + 1;
+            for (double f : fr) ok = ok && std::abs(f - fr[0]) < 1e-6;
+            INFO("vertex " << str(p) << " is not on an edge of the lattice lo − pad + i·h (lo = bounds(t).lo, pad = 5% "
+                           "of the diagonal, h = " << h << ")");
+            CHECK(ok);
+        }
     }
 }

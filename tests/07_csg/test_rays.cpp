@@ -23,6 +23,24 @@ void check_primitive_family(const Node& d, double reach, std::uint64_t seed, int
                     INFO(str(d) << ", " << str(r) << ": the end t = " << t << " is not on the surface (distance " << v << ")");
                     CHECK(std::abs(v) <= 1e-9 * reach);
                 }
+        // the normals: unit, and the direction of the distance's gradient (central differences) where it is smooth
+        for (const Span& s : got)
+            for (int e = 0; e < 2; ++e) {
+                const double t = e ? s.t1 : s.t0;
+                if (!std::isfinite(t)) continue;
+                const glm::dvec3 p = r.origin + t * r.direction, n = e ? s.n1 : s.n0;
+                const double h = 1e-6 * reach;
+                glm::dvec3 g;
+                for (int k = 0; k < 3; ++k) {
+                    glm::dvec3 dp(0.0);
+                    dp[k] = h;
+                    g[k] = double(ref_distance(d, p + dp) - ref_distance(d, p - dp)) / (2 * h);
+                }
+                if (std::abs(glm::length(g) - 1) > 1e-4) continue;  // an edge or a corner: no single normal
+                INFO(str(d) << ", " << str(r) << ": at t = " << t << " the normal is " << str(n)
+                            << ", the distance's gradient " << str(g));
+                CHECK(glm::length(n - g) < 1e-4);
+            }
     }
 }
 }  // namespace
@@ -78,6 +96,12 @@ TEST_SUITE("Task 4: spans in a primitive") {
         c.shape = Shape::cylinder;
         c.size = {0.6, 0.6, 0.9};
         check_primitive_family(c, 1.0, 32);
+        const auto side = primitive_spans(c, Ray{{0.6, 0, -3}, {0, 0, 1}});
+        CHECK_MESSAGE(side.empty(), "cylinder r = 0.6: the ray along its side line x = 0.6, y = 0 only touches it, got " << str(side));
+        const auto axis = primitive_spans(c, Ray{{0.1, 0.2, -3}, {0, 0, 2}});
+        REQUIRE_MESSAGE(axis.size() == 1, "cylinder, ray parallel to the axis inside: [1.05, 1.95], got " << str(axis));
+        CHECK(close(axis[0].t0, 1.05, 1e-14));
+        CHECK(close(axis[0].t1, 1.95, 1e-14));
         for (glm::dvec3 sz : {glm::dvec3(0.8, 0.3, 0.7), glm::dvec3(0.0, 0.9, 0.5), glm::dvec3(1.0, 0.0, 1.2)}) {
             Node k;
             k.shape = Shape::cone;
@@ -98,6 +122,13 @@ TEST_SUITE("Task 4: spans in a primitive") {
         CHECK(close(v[0].t0, 1.7, 1e-10));
         CHECK(close(v[1].t1, 4.3, 1e-10));
         check_primitive_family(t, 1.3, 34);
+        // the line y = 0.7 (= R − r) in z = 0 touches the inner equator at x = 0 from inside: ONE span
+        const auto eq = primitive_spans(t, Ray{{-3, 0.7, 0}, {2, 0, 0}});
+        const double xe = std::sqrt(1.69 - 0.49);
+        REQUIRE_MESSAGE(eq.size() == 1, "torus R = 1, r = 0.3, ray (−3, 0.7, 0) + t(2, 0, 0) touches the inner equator "
+                                        "from inside: one span [(3 − √1.2)/2, (3 + √1.2)/2], got " << str(eq));
+        CHECK(close(eq[0].t0, (3 - xe) / 2, 1e-9));
+        CHECK(close(eq[0].t1, (3 + xe) / 2, 1e-9));
         Node h;
         h.shape = Shape::halfspace;
         auto w = primitive_spans(h, Ray{{0, 0, 2}, {0, 0, -1}});
@@ -121,11 +152,35 @@ TEST_SUITE("Task 4: spans in a primitive") {
         CHECK(close(u[0].t1, -1, 1e-14));
         CHECK(close(u[1].t0, 1, 1e-14));
         CHECK(glm::length(u[1].n0 - glm::dvec3(0, 0, -1)) < 1e-12);
+        // the paraboloid x² + y² − z ≤ 0 along its axis: α = 0, one root: [5, inf) from (0, 0, −5)
+        Node pq;
+        pq.shape = Shape::quadric;
+        pq.Q = glm::dmat4(0.0);
+        pq.Q[0][0] = pq.Q[1][1] = 1;
+        pq.Q[2][3] = pq.Q[3][2] = -0.5;
+        const auto par = primitive_spans(pq, Ray{{0, 0, -5}, {0, 0, 1}});
+        REQUIRE_MESSAGE(par.size() == 1, "x² + y² − z ≤ 0 along the z axis from z = −5: [5, inf), got " << str(par));
+        CHECK(close(par[0].t0, 5, 1e-14));
+        CHECK(par[0].t1 == inf);
+        CHECK(glm::length(par[0].n0 - glm::dvec3(0, 0, -1)) < 1e-12);
+        const auto down = primitive_spans(pq, Ray{{0, 0, 5}, {0, 0, -1}});
+        REQUIRE_MESSAGE(down.size() == 1, "the same downwards from z = 5: (−inf, 5], got " << str(down));
+        CHECK(down[0].t0 == -inf);
+        CHECK(close(down[0].t1, 5, 1e-14));
+        // −x² ≤ 0 holds everywhere: the whole line is one span, even through x = 0 where the value touches 0
+        Node all;
+        all.shape = Shape::quadric;
+        all.Q = glm::dmat4(0.0);
+        all.Q[0][0] = -1;
+        const auto w2 = primitive_spans(all, Ray{{-1, 0, 0}, {1, 0, 0}});
+        REQUIRE_MESSAGE(w2.size() == 1, "−x² ≤ 0 is all of space: one span (−inf, inf), got " << str(w2));
+        CHECK(w2[0].t0 == -inf);
+        CHECK(w2[0].t1 == inf);
     }
 }
 
 TEST_SUITE("Task 5: combining interval lists") {
-    TEST_CASE("combine: touching spans merge in a union; no zero-length span anywhere" * geolab::points(4) *
+    TEST_CASE("combine: touching spans merge in a union; no zero-length span anywhere" * geolab::points(3) *
               geolab::hint("Apply every endpoint at the same t before deciding: [0, 1] ∪ [1, 2] = [0, 2], and "
                            "[0, 1] ∩ [1, 2] = nothing (not [1, 1]).")) {
         const glm::dvec3 x(1, 0, 0);
@@ -148,7 +203,7 @@ TEST_SUITE("Task 5: combining interval lists") {
         CHECK_THROWS_AS(combine(Op::blend, a, b), std::invalid_argument);
     }
 
-    TEST_CASE("combine: random span lists against the set operations sampled" * geolab::points(4) *
+    TEST_CASE("combine: random span lists against the set operations sampled" * geolab::points(3) *
               geolab::hint("Sweep both sorted lists together, keeping whether you are inside A and inside B.")) {
         Rng rng(41);
         for (int n = 0; n < 300; ++n) {
@@ -180,6 +235,48 @@ TEST_SUITE("Task 5: combining interval lists") {
         }
     }
 
+    TEST_CASE("combine: every result end carries the normal of the input end at the same t" * geolab::points(2) *
+              geolab::hint("Keep each end's own normal (n0 at t0, n1 at t1 of THAT span); A's when A and B both end "
+                           "there; B's negated in a difference.")) {
+        Rng rng(43);
+        for (int n = 0; n < 200; ++n) {
+            auto make = [&](int k) {
+                std::vector<double> ts;
+                for (int i = 0; i < 2 * k; ++i) ts.push_back(std::round(rng.uniform(0, 30)) / 2);
+                std::sort(ts.begin(), ts.end());
+                std::vector<Span> v;
+                for (int i = 0; i < k; ++i)
+                    if (ts[2 * i] < ts[2 * i + 1] && (v.empty() || v.back().t1 < ts[2 * i]))
+                        v.push_back({ts[2 * i], ts[2 * i + 1], rng.unit(), rng.unit()});  // a distinct normal per end
+                return v;
+            };
+            const auto a = make(2 + n % 4), b = make(2 + (n / 4) % 4);
+            for (Op o : {Op::unite, Op::intersect, Op::subtract}) {
+                const auto got = combine(o, a, b);
+                for (const Span& s : got)
+                    for (int e = 0; e < 2; ++e) {
+                        const double t = e ? s.t1 : s.t0;
+                        const glm::dvec3 n_got = e ? s.n1 : s.n0;
+                        glm::dvec3 want(0.0);
+                        bool found = false;
+                        for (const Span& x : a) {
+                            if (x.t0 == t) { want = x.n0; found = true; }
+                            if (x.t1 == t) { want = x.n1; found = true; }
+                        }
+                        if (!found)
+                            for (const Span& x : b) {
+                                if (x.t0 == t) { want = o == Op::subtract ? -x.n0 : x.n0; found = true; }
+                                if (x.t1 == t) { want = o == Op::subtract ? -x.n1 : x.n1; found = true; }
+                            }
+                        INFO("op " << int(o) << " of A = " << str(a) << " and B = " << str(b) << ": the end t = " << t
+                                   << " has normal " << str(n_got) << ", expected " << str(want));
+                        CHECK(found);
+                        CHECK(glm::length(n_got - want) < 1e-15);
+                    }
+            }
+        }
+    }
+
     TEST_CASE("combine: a box minus an equal box is empty; normals of subtracted parts are flipped" * geolab::points(3) *
               geolab::hint("In A − B the endpoints that come from B take −(B's normal): the wall of a hole faces into "
                            "the hole.")) {
@@ -207,6 +304,11 @@ TEST_SUITE("Task 5: combining interval lists") {
         REQUIRE_MESSAGE(v.size() == 1, "unit sphere moved to (3,0,0), ray from the origin along x: [2, 4], got " << str(v));
         CHECK(close(v[0].t0, 2, 1e-14));
         CHECK(close(v[0].t1, 4, 1e-14));
+        v = ray_spans(s, Ray{{2, -1, -1}, {1, 1, 1}});
+        REQUIRE_MESSAGE(v.size() == 1, "the same sphere, ray (2, −1, −1) + t(1, 1, 1): [1 − 1/√3, 1 + 1/√3], got " << str(v));
+        CHECK(close(v[0].t0, 1 - 1 / std::sqrt(3.0), 1e-12));
+        CHECK(close(v[0].t1, 1 + 1 / std::sqrt(3.0), 1e-12));
+        CHECK_THROWS_AS(ray_spans(s, Ray{{0, 0, 0}, {0, 0, 0}}), std::invalid_argument);
         // an ellipsoid (sphere scaled by (2, 1, 1)): at (√2, √0.5, 0)/... check the normal is the gradient direction
         const Tree e = leaf(Shape::sphere, {1, 0, 0}, scale({2, 1, 1}));
         const double a = std::sqrt(0.5);
@@ -250,6 +352,11 @@ TEST_SUITE("Task 6: ray casting") {
         CHECK_MESSAGE(!h.has_value(), "the solid is behind the ray: no hit");
         h = first_hit(t, Ray{{0.5, 0.45, 5}, {0, 0, -1}}, 4.5);
         REQUIRE(h.has_value());
+        const auto at_end = first_hit(leaf(Shape::sphere, {1, 0, 0}), Ray{{0, 0, 5}, {0, 0, -1}}, 6.0);
+        REQUIRE_MESSAGE(at_end.has_value(), "unit sphere from (0,0,5) down, t_min = 6 exactly the exit: t ≥ t_min includes it");
+        CHECK(at_end->t == 6.0);
+        const auto unbounded = first_hit(leaf(Shape::halfspace, glm::dvec3(0)), Ray{{0, 0, -1}, {0, 0, -1}}, 0.0);
+        CHECK_MESSAGE(!unbounded.has_value(), "inside the half-space z ≤ 0 going down: the span never ends, no hit");
         const double exit_t = 5 - std::sqrt(0.1);
         CHECK_MESSAGE(close(h->t, exit_t, 1e-12), "t_min = 4.5 inside the solid: the exit into the x hole at t = 5 − √0.1 = "
                                                       << exit_t << ", got " << h->t);
@@ -335,5 +442,16 @@ TEST_SUITE("Task 6: ray casting") {
             }
         CHECK(hits > 50);
         CHECK_THROWS_AS(render_image(t, cam, 0, 10, {0, 0, 1}), std::invalid_argument);
+        // the eye inside a small sphere (radius 0.5 around it): every pixel hits the exit, normal = the ray direction
+        const Tree around = leaf(Shape::sphere, {0.5, 0, 0}, translate(cam.eye));
+        const auto all = render_image(around, cam, 9, 7, {0, 0, -1});
+        for (int y = 0; y < 7; ++y)
+            for (int x = 0; x < 9; ++x) {
+                const Ray r = cam.ray(x, y, 9, 7);
+                const int want = int(std::lround(255 * (0.1 + 0.8 * std::abs(r.direction.z))));
+                INFO("eye inside a sphere of radius 0.5, pixel (" << x << ", " << y << "): expected grey " << want
+                                                                  << ", got " << int(all.rgba[4 * (y * 9 + x)]));
+                CHECK(std::abs(int(all.rgba[4 * (y * 9 + x)]) - want) <= 1);
+            }
     }
 }

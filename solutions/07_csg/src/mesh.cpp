@@ -30,11 +30,11 @@ PolygonSoup mesh_tree(const Tree& t, int resolution) {
     // BEGIN SOLUTION
     if (resolution < 2) throw std::invalid_argument("mesh_tree: resolution must be >= 2");
     Box b = bounds(t);
-    for (int i = 0; i < 3; ++i)
-        if (!std::isfinite(b.lo[i]) || !std::isfinite(b.hi[i]))
-            throw std::invalid_argument("mesh_tree: the tree is unbounded (intersect half-spaces and quadrics with a "
-                                        "bounded solid)");
-    const double pad = 0.05 * glm::length(b.hi - b.lo);
+    const double diagonal = glm::length(b.hi - b.lo);  // not finite when a side is infinite
+    if (!std::isfinite(diagonal))
+        throw std::invalid_argument("mesh_tree: the tree is unbounded (intersect half-spaces and quadrics with a "
+                                    "bounded solid)");
+    const double pad = 0.05 * diagonal;
     b.lo -= glm::dvec3(pad);
     b.hi += glm::dvec3(pad);
     return polygonize(TreeField(t, b), b, resolution);

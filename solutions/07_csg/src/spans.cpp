@@ -101,11 +101,10 @@ std::vector<Span> torus_spans(const Node& leaf, const Ray& r) {
     const double oo = glm::dot(o, o);
     if (oo >= bound * bound) return {};
     const double hi = std::sqrt(bound * bound - oo), lo = -hi;
-    const double B = 2 * glm::dot(o, u);  // 0 up to rounding; kept for exactness
+    // |p|² = s² + |o|² (o ⟂ u), so (|p|² + R² − r²)² − 4R²(x² + y²) = (s² + C)² − 4R²(ρ-terms) with no odd |p|² terms
     const double C = oo + R * R - rr * rr;
     const double dxy = u.x * u.x + u.y * u.y, odxy = o.x * u.x + o.y * u.y, oxy = o.x * o.x + o.y * o.y;
-    const std::vector<double> c = {C * C - 4 * R * R * oxy, 2 * B * C - 8 * R * R * odxy,
-                                   B * B + 2 * C - 4 * R * R * dxy, 2 * B, 1.0};
+    const std::vector<double> c = {C * C - 4 * R * R * oxy, -8 * R * R * odxy, 2 * C - 4 * R * R * dxy, 0.0, 1.0};
     std::vector<double> cuts{lo};
     for (double s : real_roots(c, lo, hi)) cuts.push_back(s);
     cuts.push_back(hi);
@@ -148,11 +147,9 @@ std::vector<Span> primitive_spans(const Node& leaf, const Ray& r) {
                                                  [](glm::dvec3 p) { return p; }));
         case Shape::box: {
             Span sp{-inf, inf, glm::dvec3(0), glm::dvec3(0)};
-            for (int i = 0; i < 3; ++i) {
-                glm::dvec3 axis(0.0);
-                axis[i] = 1;
-                clip_slab(sp, o[i], d[i], -s[i], s[i], axis);
-            }
+            clip_slab(sp, o.x, d.x, -s.x, s.x, {1, 0, 0});
+            clip_slab(sp, o.y, d.y, -s.y, s.y, {0, 1, 0});
+            clip_slab(sp, o.z, d.z, -s.z, s.z, {0, 0, 1});
             return keep_positive({sp});
         }
         case Shape::cylinder:
