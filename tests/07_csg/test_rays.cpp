@@ -65,6 +65,13 @@ TEST_SUITE("Task 4: spans in a primitive") {
         CHECK_MESSAGE(v.empty(), "a ray tangent to the unit sphere at (1,0,0): no span, got " << str(v));
         v = primitive_spans(s, Ray{{2, 0, 5}, {0, 0, -1}});
         CHECK_MESSAGE(v.empty(), "a ray missing the sphere: got " << str(v));
+        // an origin 1e-10 outside the surface: the naive (−β ± √Δ)/(2α) loses the far root to cancellation
+        const double z0 = 1 + 1e-10;
+        v = primitive_spans(s, Ray{{0, 0, z0}, {0, 0, 1}});
+        REQUIRE_MESSAGE(v.size() == 1, "unit sphere, ray from (0, 0, 1 + 1e-10) along +z: one span behind the origin, got " << str(v));
+        CHECK_MESSAGE(std::abs(v[0].t0 - (-1 - z0)) <= 1e-14, "t0 = −1 − z0 = " << -1 - z0 << ", got " << v[0].t0
+                                                                                 << " (use the stable form of the roots)");
+        CHECK_MESSAGE(std::abs(v[0].t1 - (1 - z0)) <= 1e-20, "t1 = 1 − z0 = " << 1 - z0 << ", got " << v[0].t1);
         CHECK_THROWS_AS(primitive_spans(s, Ray{{0, 0, 0}, {0, 0, 0}}), std::invalid_argument);
     }
 
@@ -136,6 +143,13 @@ TEST_SUITE("Task 4: spans in a primitive") {
         CHECK(w[0].t0 == 2);
         CHECK(w[0].t1 == inf);
         CHECK(glm::length(w[0].n0 - glm::dvec3(0, 0, 1)) < 1e-15);
+        CHECK_MESSAGE(w[0].n1 == glm::dvec3(0.0), "the infinite end's normal is the zero vector, got " << str(w[0].n1));
+        const auto up = primitive_spans(h, Ray{{0, 0, -1}, {0, 0, 1}});
+        REQUIRE_MESSAGE(up.size() == 1, "half-space z ≤ 0, ray up from z = −1: (−inf, 1], got " << str(up));
+        CHECK(up[0].t0 == -inf);
+        CHECK(up[0].t1 == 1);
+        CHECK(up[0].n0 == glm::dvec3(0.0));
+        CHECK(glm::length(up[0].n1 - glm::dvec3(0, 0, 1)) < 1e-15);
         CHECK(primitive_spans(h, Ray{{0, 0, -1}, {1, 0, 0}}).size() == 1);
         CHECK(primitive_spans(h, Ray{{0, 0, 1}, {1, 0, 0}}).empty());
         // hyperboloid of two sheets z² − x² − y² = 1 as the solid −(z² − x² − y² − 1) ≤ 0 ... i.e. inside |z| ≥ √(1+ρ²)
@@ -442,6 +456,9 @@ TEST_SUITE("Task 6: ray casting") {
             }
         CHECK(hits > 50);
         CHECK_THROWS_AS(render_image(t, cam, 0, 10, {0, 0, 1}), std::invalid_argument);
+        CHECK_THROWS_AS(render_image(t, cam, 10, 0, {0, 0, 1}), std::invalid_argument);
+        const auto one = render_image(t, cam, 1, 1, {0, 0, 1});
+        CHECK_MESSAGE((one.width == 1 && one.height == 1 && one.rgba.size() == 4), "a 1×1 image is allowed");
         // the eye inside a small sphere (radius 0.5 around it): every pixel hits the exit, normal = the ray direction
         const Tree around = leaf(Shape::sphere, {0.5, 0, 0}, translate(cam.eye));
         const auto all = render_image(around, cam, 9, 7, {0, 0, -1});
