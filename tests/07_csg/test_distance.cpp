@@ -85,6 +85,20 @@ TEST_SUITE("Task 1: primitives") {
         const double want = (glm::dot(p, p) - 1) / (2 * glm::length(p));
         CHECK_MESSAGE(close(primitive_distance(u, p), want, 1e-12),
                       "unit sphere quadric at " << str(p) << ": expected " << want << ", got " << primitive_distance(u, p));
+        // the unit sphere about (1, 0, 0) as a quadric: q = (x − 1)² + y² + z² − 1 (linear terms count in ∇q)
+        Node w;
+        w.shape = Shape::quadric;
+        w.Q = glm::dmat4(1.0);
+        w.Q[3][0] = w.Q[0][3] = -1;
+        w.Q[3][3] = 0;
+        for (glm::dvec3 x : {glm::dvec3(2.5, 0.5, -0.3), glm::dvec3(1.3, 0, 0), glm::dvec3(0.2, 0.1, 0.4)}) {
+            const glm::dvec3 c = x - glm::dvec3(1, 0, 0);
+            const double q = glm::dot(c, c) - 1, want2 = q / (2 * glm::length(c));
+            CHECK_MESSAGE(close(primitive_distance(w, x), want2, 1e-12), "the quadric (x − 1)² + y² + z² − 1 at "
+                              << str(x) << ": expected q/|∇q| = " << want2 << ", got " << primitive_distance(w, x));
+        }
+        CHECK_MESSAGE(primitive_distance(w, {1, 0, 0}) == -1.0,
+                      "at the centre ∇q = 0: return q itself (−1), got " << primitive_distance(w, {1, 0, 0}));
     }
 
     TEST_CASE("primitive: every shape is 1-Lipschitz; zero on its surface and negative exactly inside" *
@@ -289,6 +303,15 @@ TEST_SUITE("Task 3: point membership") {
         CHECK_MESSAGE(classify(op(Op::subtract, a, a), glm::dvec3(0.5), 1e-9) == Membership::out, "a cube minus itself at its centre: out");
         CHECK_MESSAGE(classify(op(Op::subtract, a, a), glm::dvec3(1, 0.5, 0.5), 1e-9) == Membership::on, "a cube minus itself on its face: on");
         CHECK(classify(op(Op::unite, a, b), {0.5, 0.5, 0.5}, 1e-9) == Membership::in);
+        CHECK_MESSAGE(classify(op(Op::unite, a, b), {0, 0.5, 0.5}, 1e-9) == Membership::on,
+                      "union: on a's face x = 0 and outside b: on");
+        CHECK(classify(op(Op::intersect, a, b), {0, 0.5, 0.5}, 1e-9) == Membership::out);
+        // a blend node classifies by its own value: (0, 0.4, 0) is outside both spheres but inside their blend
+        const Tree s1 = leaf(Shape::sphere, {0.5, 0, 0}, translate({-0.4, 0, 0})), s2 = leaf(Shape::sphere, {0.5, 0, 0}, translate({0.4, 0, 0}));
+        CHECK_MESSAGE(classify(op(Op::blend, s1, s2, 0.3), {0, 0.4, 0}, 1e-9) == Membership::in,
+                      "blend k = 0.3 of spheres r = 0.5 at (±0.4, 0, 0) at (0, 0.4, 0): smin = −0.0093: in");
+        CHECK(classify(op(Op::unite, s1, s2), {0, 0.4, 0}, 1e-9) == Membership::out);
+        CHECK(classify(op(Op::blend, s1, s2, 0.3), {0, 0.45, 0}, 1e-9) == Membership::out);
         CHECK(classify(op(Op::intersect, a, b), {0.5, 0.5, 0.5}, 1e-9) == Membership::out);
         CHECK(classify(op(Op::subtract, a, b), {1.5, 0.5, 0.5}, 1e-9) == Membership::out);
         CHECK(classify(op(Op::subtract, b, a), {1.5, 0.5, 0.5}, 1e-9) == Membership::in);

@@ -85,6 +85,7 @@ TEST_SUITE("Task 7: meshes and volumes") {
         CHECK(last < 0.01);
         CHECK_THROWS_AS(mesh_tree(octahedron(1.0), 0), std::invalid_argument);
         CHECK_THROWS_AS(mesh_tree(leaf(Shape::sphere, {1, 0, 0}), 1), std::invalid_argument);
+        CHECK_MESSAGE(mesh_tree(leaf(Shape::sphere, {1, 0, 0}), 2).n_faces() > 0, "resolution 2 is allowed");
         CHECK_THROWS_AS(mesh_tree(leaf(Shape::halfspace, glm::dvec3(0)), 16), std::invalid_argument);
     }
 

@@ -89,6 +89,8 @@ TEST_SUITE("Task 4: spans in a primitive") {
         CHECK(glm::length(v[0].n1 - glm::dvec3(1, 0, 0)) < 1e-14);
         v = primitive_spans(b, Ray{{-5, 2, 0}, {1, 0, 0}});
         CHECK_MESSAGE(v.empty(), "a ray in the face plane y = 2: only touches the box, got " << str(v));
+        v = primitive_spans(b, Ray{{-5, -2, 0}, {1, 0, 0}});
+        CHECK_MESSAGE(v.empty(), "a ray in the face plane y = −2: only touches the box, got " << str(v));
         v = primitive_spans(b, Ray{{-5, 2, 3}, {1, 0, 0}});
         CHECK_MESSAGE(v.empty(), "a ray along the edge y = 2, z = 3: got " << str(v));
         v = primitive_spans(b, Ray{{-2, -1, 0}, {1, -1, 0}});  // meets the box only on its edge at (−1, −2)
@@ -151,6 +153,11 @@ TEST_SUITE("Task 4: spans in a primitive") {
         CHECK(up[0].n0 == glm::dvec3(0.0));
         CHECK(glm::length(up[0].n1 - glm::dvec3(0, 0, 1)) < 1e-15);
         CHECK(primitive_spans(h, Ray{{0, 0, -1}, {1, 0, 0}}).size() == 1);
+        CHECK_MESSAGE(primitive_spans(h, Ray{{0, 0, 0}, {1, 0, 0}}).empty(), "a ray in the plane z = 0 only touches the half-space");
+        CHECK(primitive_spans(h, Ray{{0, 0, 0.5}, {1, 0, 0}}).empty());
+        const auto dn = primitive_spans(h, Ray{{0, 0, 2}, {0, 0, -2}});
+        REQUIRE(dn.size() == 1);
+        CHECK_MESSAGE(dn[0].t0 == 1, "half-space, ray (0, 0, 2) + t(0, 0, −2): enters at t = 1, got " << dn[0].t0);
         CHECK(primitive_spans(h, Ray{{0, 0, 1}, {1, 0, 0}}).empty());
         // hyperboloid of two sheets z² − x² − y² = 1 as the solid −(z² − x² − y² − 1) ≤ 0 ... i.e. inside |z| ≥ √(1+ρ²)
         Node q;
@@ -172,15 +179,24 @@ TEST_SUITE("Task 4: spans in a primitive") {
         pq.Q = glm::dmat4(0.0);
         pq.Q[0][0] = pq.Q[1][1] = 1;
         pq.Q[2][3] = pq.Q[3][2] = -0.5;
-        const auto par = primitive_spans(pq, Ray{{0, 0, -5}, {0, 0, 1}});
-        REQUIRE_MESSAGE(par.size() == 1, "x² + y² − z ≤ 0 along the z axis from z = −5: [5, inf), got " << str(par));
-        CHECK(close(par[0].t0, 5, 1e-14));
+        const auto par = primitive_spans(pq, Ray{{0, 0, -5}, {0, 0, 2}});
+        REQUIRE_MESSAGE(par.size() == 1, "x² + y² − z ≤ 0 along the z axis from z = −5, direction (0, 0, 2): [2.5, inf), got " << str(par));
+        CHECK(close(par[0].t0, 2.5, 1e-14));
         CHECK(par[0].t1 == inf);
         CHECK(glm::length(par[0].n0 - glm::dvec3(0, 0, -1)) < 1e-12);
-        const auto down = primitive_spans(pq, Ray{{0, 0, 5}, {0, 0, -1}});
-        REQUIRE_MESSAGE(down.size() == 1, "the same downwards from z = 5: (−inf, 5], got " << str(down));
+        const auto down = primitive_spans(pq, Ray{{0, 0, 5}, {0, 0, -2}});
+        REQUIRE_MESSAGE(down.size() == 1, "the same downwards from z = 5, direction (0, 0, −2): (−inf, 2.5], got " << str(down));
         CHECK(down[0].t0 == -inf);
-        CHECK(close(down[0].t1, 5, 1e-14));
+        CHECK(close(down[0].t1, 2.5, 1e-14));
+        // the unit sphere about (1, 0, 0) as a quadric: the normal needs the linear terms (X = (x, y, z, 1))
+        Node sq;
+        sq.shape = Shape::quadric;
+        sq.Q = glm::dmat4(1.0);
+        sq.Q[3][0] = sq.Q[0][3] = -1;
+        sq.Q[3][3] = 0;
+        const auto ss = primitive_spans(sq, Ray{{1.6, 0, -5}, {0, 0, 1}});
+        REQUIRE_MESSAGE(ss.size() == 1, "(x − 1)² + y² + z² ≤ 1, ray x = 1.6 along z: one span, got " << str(ss));
+        CHECK_MESSAGE(glm::length(ss[0].n0 - glm::dvec3(0.6, 0, -0.8)) < 1e-12, "entry normal (0.6, 0, −0.8), got " << str(ss[0].n0));
         // −x² ≤ 0 holds everywhere: the whole line is one span, even through x = 0 where the value touches 0
         Node all;
         all.shape = Shape::quadric;
@@ -323,6 +339,11 @@ TEST_SUITE("Task 5: combining interval lists") {
         CHECK(close(v[0].t0, 1 - 1 / std::sqrt(3.0), 1e-12));
         CHECK(close(v[0].t1, 1 + 1 / std::sqrt(3.0), 1e-12));
         CHECK_THROWS_AS(ray_spans(s, Ray{{0, 0, 0}, {0, 0, 0}}), std::invalid_argument);
+        const auto hs = ray_spans(leaf(Shape::halfspace, glm::dvec3(0), translate({0, 0, 1}) * rotate(30, {1, 0, 0})),
+                                  Ray{{0, 0, 5}, {0, 0, -1}});
+        REQUIRE(hs.size() == 1);
+        CHECK_MESSAGE(hs[0].t1 == inf, "a moved half-space seen from above: the span goes on to +inf");
+        CHECK_MESSAGE(hs[0].n1 == glm::dvec3(0.0), "its infinite end keeps the zero normal, got " << str(hs[0].n1));
         // an ellipsoid (sphere scaled by (2, 1, 1)): at (√2, √0.5, 0)/... check the normal is the gradient direction
         const Tree e = leaf(Shape::sphere, {1, 0, 0}, scale({2, 1, 1}));
         const double a = std::sqrt(0.5);
@@ -366,6 +387,9 @@ TEST_SUITE("Task 6: ray casting") {
         CHECK_MESSAGE(!h.has_value(), "the solid is behind the ray: no hit");
         h = first_hit(t, Ray{{0.5, 0.45, 5}, {0, 0, -1}}, 4.5);
         REQUIRE(h.has_value());
+        const auto at_start = first_hit(leaf(Shape::sphere, {1, 0, 0}), Ray{{0, 0, 5}, {0, 0, -1}}, 4.0);
+        REQUIRE(at_start.has_value());
+        CHECK_MESSAGE(at_start->t == 4.0, "t_min = 4 exactly the entry: t0 ≥ t_min, the hit is the entry, got " << at_start->t);
         const auto at_end = first_hit(leaf(Shape::sphere, {1, 0, 0}), Ray{{0, 0, 5}, {0, 0, -1}}, 6.0);
         REQUIRE_MESSAGE(at_end.has_value(), "unit sphere from (0,0,5) down, t_min = 6 exactly the exit: t ≥ t_min includes it");
         CHECK(at_end->t == 6.0);
@@ -448,6 +472,7 @@ TEST_SUITE("Task 6: ray casting") {
                     const int want = int(std::lround(255 * (0.1 + 0.8 * std::abs(nw.z))));
                     CHECK(std::abs(int(p[0]) - want) <= 1);
                     CHECK(p[0] == p[1]);
+                    CHECK(p[0] == p[2]);
                 } else if (t0 < t1 + 1e-9 && t0 > 0) {
                     // an edge pixel: either
                 } else {
@@ -465,10 +490,13 @@ TEST_SUITE("Task 6: ray casting") {
         for (int y = 0; y < 7; ++y)
             for (int x = 0; x < 9; ++x) {
                 const Ray r = cam.ray(x, y, 9, 7);
-                const int want = int(std::lround(255 * (0.1 + 0.8 * std::abs(r.direction.z))));
+                const double exact = 255 * (0.1 + 0.8 * std::abs(r.direction.z));
+                const int want = int(std::lround(exact));
+                const bool tie = std::abs(exact - std::floor(exact) - 0.5) < 1e-6;  // rounding may go either way
                 INFO("eye inside a sphere of radius 0.5, pixel (" << x << ", " << y << "): expected grey " << want
-                                                                  << ", got " << int(all.rgba[4 * (y * 9 + x)]));
-                CHECK(std::abs(int(all.rgba[4 * (y * 9 + x)]) - want) <= 1);
+                                                                  << " (round(255·v)), got " << int(all.rgba[4 * (y * 9 + x)]));
+                CHECK(std::abs(int(all.rgba[4 * (y * 9 + x)]) - want) <= (tie ? 1 : 0));
+                CHECK(all.rgba[4 * (y * 9 + x) + 2] == all.rgba[4 * (y * 9 + x)]);
             }
     }
 }
