@@ -23,7 +23,25 @@ int main(int argc, char** argv) {
         std::ofstream(dir / "collide_80k.stl", std::ios::binary) << stl;
         geolab::write_mesh(dir / "fan_400k.ply", geolab::hostile::fan(400000));
         geolab::write_mesh(dir / "polygon_1m.ply", geolab::hostile::big_polygon(1000000));
-        std::printf("wrote collide_80k.stl, fan_400k.ply, polygon_1m.ply into %s\n", dir.c_str());
+        // OpenSCAD (lab 07's reader): nesting far beyond its depth limit, a long flat file, a long expression
+        {
+            std::ofstream deep(dir / "deep_nesting.scad");
+            for (int i = 0; i < 100000; ++i) deep << "translate([1,0,0]) ";
+            deep << "cube(1);\n";
+            std::ofstream parens(dir / "deep_parens.scad");
+            parens << "x = " << std::string(100000, '(') << "1" << std::string(100000, ')') << ";\ncube(x);\n";
+            std::ofstream blocks(dir / "deep_blocks.scad");
+            blocks << std::string(100000, '{') << "cube(1);" << std::string(100000, '}') << "\n";
+            std::ofstream flat(dir / "flat_100k.scad");
+            flat << "union() {\n";
+            for (int i = 0; i < 100000; ++i) flat << "translate([" << i << ", 0, 0]) sphere(0.4);\n";
+            flat << "}\n";
+            std::ofstream sum(dir / "long_sum.scad");
+            sum << "x = 0";
+            for (int i = 0; i < 200000; ++i) sum << " + 1";
+            sum << ";\ncube(x);\n";
+        }
+        std::printf("wrote collide_80k.stl, fan_400k.ply, polygon_1m.ply and five .scad files into %s\n", dir.c_str());
     } catch (const std::exception& e) {
         std::fprintf(stderr, "make_corpus: %s\n", e.what());
         return 1;

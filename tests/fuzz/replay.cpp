@@ -17,6 +17,7 @@
 
 #include "geolab/halfedge.hpp"
 #include "geolab/io.hpp"
+#include "geolab/scad.hpp"
 #include "geolab/volume_io.hpp"
 #include "soup_bytes.hpp"
 
@@ -33,6 +34,15 @@ std::string read_bytes(const fs::path& p) {
 std::string replay(const fs::path& p) {
     // Volume meshes (lab 02's formats): read and checked; a TetGen mesh is read from its .node (with .ele, .face).
     if (p.extension() == ".ele" || p.extension() == ".face") return "read with its .node";
+    // OpenSCAD scenes (lab 07's subset reader): parsed; a ParseError is the clean rejection.
+    if (p.extension() == ".scad") {
+        try {
+            const geolab::scad::Scene s = geolab::scad::parse(read_bytes(p), p.filename().string());
+            return "parsed " + std::to_string(s.nodes.size()) + " nodes";
+        } catch (const geolab::scad::ParseError& e) {
+            return std::string("rejected: ") + e.what();
+        }
+    }
     if (p.extension() == ".mesh" || p.extension() == ".node") {
         try {
             const geolab::VolumeMesh m = p.extension() == ".mesh"

@@ -1,0 +1,1 @@
+cube(1, center = 3);

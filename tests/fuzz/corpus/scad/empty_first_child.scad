@@ -1,0 +1,1 @@
+difference() { union() {} cube(1); }

@@ -1,0 +1,1 @@
+linear_extrude(2) square(1);

@@ -1,0 +1,2 @@
+module m() { cube(1); }
+m();

@@ -1,0 +1,2 @@
+translate([1,2,3]) {
+ cube(1);

@@ -1,0 +1,1 @@
+cube(size = 1, size = 2);
