@@ -36,11 +36,8 @@ void add_contour(CLI::App& app, int& status);
 void add_table1(CLI::App& app, int& status);
 void add_mutate(CLI::App& app, int& status);
 void add_quadric(CLI::App& app, int& status);
-<<<<<<< HEAD
 void add_blobby(CLI::App& app, int& status);
 void add_sweep(CLI::App& app, int& status);
-=======
 void add_csg(CLI::App& app, int& status);
->>>>>>> lab07
 
 }  // namespace geolab::cli

@@ -51,12 +51,9 @@ int main(int argc, char** argv) {
     geolab::cli::add_table1(app, status);
     geolab::cli::add_mutate(app, status);
     geolab::cli::add_quadric(app, status);
-<<<<<<< HEAD
     geolab::cli::add_blobby(app, status);
     geolab::cli::add_sweep(app, status);
-=======
     geolab::cli::add_csg(app, status);
->>>>>>> lab07
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
