@@ -11,7 +11,7 @@
 
 namespace geolab::voxels {
 
-throw geolab::NotImplemented(__func__);
+// Helper functions of your own can go here.
 
 std::string encode_binvox(const Binvox& file) {
     throw geolab::NotImplemented(__func__);

@@ -7,7 +7,7 @@
 
 namespace geolab::voxels {
 
-throw geolab::NotImplemented(__func__);
+// Helper functions of your own can go here.
 
 ValueGrid csg_union(const ValueGrid& f1, const ValueGrid& f2) {
     throw geolab::NotImplemented(__func__);

@@ -8,7 +8,7 @@
 
 namespace geolab::voxels {
 
-throw geolab::NotImplemented(__func__);
+// Helper functions of your own can go here.
 
 bool triangle_overlaps_voxel(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, std::int64_t i,
                              std::int64_t j, std::int64_t k) {

@@ -16,7 +16,7 @@
 
 namespace geolab::voxels {
 
-throw geolab::NotImplemented(__func__);
+// Helper functions of your own can go here.
 
 BitGrid parity_fill(const PolygonSoup& mesh, const Dims& dims, int axis, int threads) {
     throw geolab::NotImplemented(__func__);

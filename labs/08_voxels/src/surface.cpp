@@ -13,7 +13,7 @@
 
 namespace geolab::voxels {
 
-throw geolab::NotImplemented(__func__);
+// Helper functions of your own can go here.
 
 BitGrid voxelize_surface(const PolygonSoup& mesh, const Dims& dims, int threads) {
     throw geolab::NotImplemented(__func__);
