@@ -18,7 +18,7 @@ void check_index(Dims d, std::int64_t i, std::int64_t j, std::int64_t k) {
 }  // namespace
 
 TEST_SUITE("Task 1: the packed grid") {
-    TEST_CASE("packed grid: voxel_index is x fastest, then y, then z" * geolab::points(2) *
+    TEST_CASE("packed grid: voxel_index is x fastest; then y; then z" * geolab::points(2) *
               geolab::hint("index = i + nx·(j + ny·k)")) {
         check_index({4, 3, 2}, 0, 0, 0);
         check_index({4, 3, 2}, 1, 0, 0);

@@ -16,7 +16,7 @@ BitGrid random_bits(Dims d, Rng& rng) {
 }  // namespace
 
 TEST_SUITE("Task 5: voxel CSG") {
-    TEST_CASE("CSG: union = max, intersection = min, add = C1·F1 + C2·F2, subtract = max(F1 − F2, 0)" * geolab::points(2) *
+    TEST_CASE("CSG: union = max; intersection = min; add = C1·F1 + C2·F2; subtract = max(F1 − F2; 0)" * geolab::points(2) *
               geolab::hint("voxel by voxel, same dims; subtract clamps at 0")) {
         Rng rng(5);
         for (Dims d : {Dims{3, 4, 5}, Dims{1, 1, 1}, Dims{7, 1, 2}}) {
@@ -37,7 +37,7 @@ TEST_SUITE("Task 5: voxel CSG") {
             }
         }
     }
-    TEST_CASE("CSG: packed grids, bitwise, with clean tails" * geolab::points(2) *
+    TEST_CASE("CSG: packed grids; bitwise; with clean tails" * geolab::points(2) *
               geolab::hint("| & &~ word by word; the complement must clear the bits past the last voxel")) {
         Rng rng(6);
         for (Dims d : {Dims{5, 5, 5}, Dims{8, 8, 1}, Dims{3, 7, 11}, Dims{1, 1, 1}}) {

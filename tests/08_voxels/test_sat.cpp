@@ -69,7 +69,7 @@ TEST_SUITE("Task 2: the triangle-box test") {
         }
         CHECK_MESSAGE(found >= 100, "test self-check: only " << found << " edge-axis cases found");
     }
-    TEST_CASE("triangle-box: touching a face, an edge or a corner only is no overlap" * geolab::points(3) *
+    TEST_CASE("triangle-box: touching a face; an edge or a corner only is no overlap" * geolab::points(3) *
               geolab::hint("the voxel is open: a projection that only touches the box's projection separates")) {
         // a triangle in the plane x = 1.5 touching voxel (0,0,0)'s face? no: these touch the box [0,1]^3 from outside
         check({glm::dvec3(1, 0.2, 0.2), glm::dvec3(2, 0.5, 0.2), glm::dvec3(1.5, 0.5, 0.9)}, 0, 0, 0, false, "touches face x = 1 at a vertex");

@@ -71,7 +71,7 @@ TEST_SUITE("Task 3: surface voxelization") {
                            C{icosphere({2, 2, 2}, 7, 1), {8, 8, 8}, "a sphere larger than the grid"}})
             check_grid(voxelize_surface(c.s, c.d, 1), expected_surface(c.s, c.d), c.what);
     }
-    TEST_CASE("surface: 2, 3 and 8 threads give exactly the 1-thread grid (bunny00, 96³)" * geolab::points(3) *
+    TEST_CASE("surface: 2; 3 and 8 threads give exactly the 1-thread grid (bunny00; 96³)" * geolab::points(3) *
               geolab::time_limit(60) *
               geolab::hint("threads that OR bits into the same 64-bit word race: use std::atomic_ref's fetch_or, or give "
                            "each thread whole words")) {
