@@ -157,6 +157,23 @@ inline PolygonSoup icosphere(glm::dvec3 c, double r, int levels) {
     for (auto& tri : f) s.add_face({tri[0], tri[1], tri[2]});
     return s;
 }
+// "Dust": one tiny triangle inside each voxel (i, j, k0) of an nx × ny layer, in row order, so that threads taking
+// triangles in turn write neighbouring bits of the same 64-bit words at the same time (a race shows). Each triangle
+// covers its column's centre (i + ½, j + ½), so along z it flips that column once (z within 0.05 of the given height).
+inline PolygonSoup dust(std::int64_t nx, std::int64_t ny, double z) {
+    PolygonSoup s;
+    for (std::int64_t j = 0; j < ny; ++j)
+        for (std::int64_t i = 0; i < nx; ++i) {
+            const auto b = std::uint32_t(s.positions.size());
+            const double x = double(i), y = double(j);
+            s.positions.push_back({x + 0.3, y + 0.3, z});
+            s.positions.push_back({x + 0.8, y + 0.4, z + 0.05});
+            s.positions.push_back({x + 0.4, y + 0.8, z - 0.05});
+            s.add_face({b, b + 1, b + 2});
+        }
+    return s;
+}
+
 // The enclosed volume of a closed, outward mesh (divergence theorem, long double).
 inline double mesh_volume(const PolygonSoup& s) {
     LD v = 0;

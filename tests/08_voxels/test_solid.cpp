@@ -208,7 +208,7 @@ TEST_SUITE("Task 4: solid voxelization") {
             check_grid(r.grid, expected_flood_fill(voxelize_surface(m, {48, 48, 48}, 1)), name + ": flood fill of its surface");
         }
     }
-    TEST_CASE("solid: 2 and 3 threads give exactly the 1-thread parity (bunny00; 96³)" * geolab::points(2) *
+    TEST_CASE("solid: 2; 3 and 8 threads give exactly the 1-thread parity (bunny00; 96³)" * geolab::points(2) *
               geolab::time_limit(60) * geolab::hint("threads flipping bits of one word race: std::atomic_ref's fetch_xor")) {
         const PolygonSoup m = model_in_grid("bunny00", 96);
         for (int axis = 0; axis < 3; ++axis) {
@@ -216,5 +216,11 @@ TEST_SUITE("Task 4: solid voxelization") {
             CHECK(count_bits(one) > 100000);
             for (int t : {2, 3, 8}) check_grid(parity_fill(m, {96, 96, 96}, axis, t), one, std::to_string(t) + " threads, axis " + std::to_string(axis));
         }
+        // one flip per column of a 512 x 512 grid, neighbouring columns in turn on different threads
+        const PolygonSoup layer = dust(512, 512, 1.2);
+        const Dims e{512, 512, 3};
+        const BitGrid want = grid_of(e, [](std::int64_t, std::int64_t, std::int64_t k) { return k >= 1; });
+        for (int rep = 0; rep < 12; ++rep)
+            for (int t : {2, 8}) check_grid(parity_fill(layer, e, 2, t), want, "dust layer, " + std::to_string(t) + " threads");
     }
 }

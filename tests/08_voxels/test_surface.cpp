@@ -81,6 +81,12 @@ TEST_SUITE("Task 3: surface voxelization") {
         CHECK(count_bits(one) > 20000);
         for (int rep = 0; rep < 3; ++rep)
             for (int t : {2, 3, 8}) check_grid(voxelize_surface(m, d, t), one, std::to_string(t) + " threads");
+        // every voxel of a 512 x 512 layer set by its own triangle: threads write the same words at the same time
+        const PolygonSoup layer = dust(512, 512, 1.2);
+        const Dims e{512, 512, 3};
+        const BitGrid want = grid_of(e, [](std::int64_t, std::int64_t, std::int64_t k) { return k == 1; });
+        for (int rep = 0; rep < 12; ++rep)
+            for (int t : {2, 8}) check_grid(voxelize_surface(layer, e, t), want, "dust layer, " + std::to_string(t) + " threads");
     }
     TEST_CASE("surface: bad arguments are errors" * geolab::points(1) *
               geolab::hint("threads < 1 and invalid soups (check_soup) throw std::invalid_argument")) {
