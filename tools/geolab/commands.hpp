@@ -36,5 +36,6 @@ void add_contour(CLI::App& app, int& status);
 void add_table1(CLI::App& app, int& status);
 void add_mutate(CLI::App& app, int& status);
 void add_quadric(CLI::App& app, int& status);
+void add_voxelize(CLI::App& app, int& status);
 
 }  // namespace geolab::cli

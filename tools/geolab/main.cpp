@@ -51,6 +51,7 @@ int main(int argc, char** argv) {
     geolab::cli::add_table1(app, status);
     geolab::cli::add_mutate(app, status);
     geolab::cli::add_quadric(app, status);
+    geolab::cli::add_voxelize(app, status);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
