@@ -107,6 +107,17 @@ TEST_SUITE("Task 6: binvox") {
             INFO(what << ": expected geolab::IoError");
             CHECK_THROWS_AS(decode_binvox(bytes, what), geolab::IoError);
         }
+        // non-cubic dims whose data would fit the first size; the error names the header line
+        CHECK_THROWS_AS(decode_binvox("#binvox 1\ndim 2 2 3\ndata\n" + pairs({0, 8})), geolab::IoError);
+        CHECK_THROWS_AS(decode_binvox("#binvox 1\ndim 3 2 2\ndata\n" + pairs({0, 27})), geolab::IoError);
+        try {
+            decode_binvox("#binvox 1\ndim 2 2 2\nfoo 1\ndata\n" + pairs({0, 8}), "f.binvox");
+            FAIL("an unknown header line must throw");
+        } catch (const geolab::IoError& e) {
+            INFO("the unknown line is line 3 of the file; the error says line " << e.line() << ": " << e.what());
+            CHECK(e.line() == 3);
+            CHECK(e.file() == "f.binvox");
+        }
         // version 2: any non-zero value is a set voxel
         const Binvox v2 = decode_binvox("#binvox 2\ndim 2 2 2\ndata\n" + pairs({0, 4, 7, 1, 0, 3}));
         CHECK(v2.grid.get(1, 0, 0));

@@ -65,6 +65,12 @@ TEST_SUITE("Task 5: voxel CSG") {
         CHECK_THROWS_AS(csg_add(a, b, 1, 1), std::invalid_argument);
         CHECK_THROWS_AS(csg_subtract(a, b), std::invalid_argument);
         CHECK_THROWS_AS(csg_union(short_a, short_a), std::invalid_argument);
+        ValueGrid negative;  // (−1)·(−1)·1 = 1 value: the product matches, the dims do not make sense
+        negative.dims = {-1, -1, 1};
+        negative.values = {0.5};
+        CHECK_THROWS_AS(csg_union(negative, negative), std::invalid_argument);
+        negative.dims = {1, -1, -1};
+        CHECK_THROWS_AS(csg_subtract(negative, negative), std::invalid_argument);
         const BitGrid p({3, 3, 3}), q({3, 3, 4});
         BitGrid broken = p;
         broken.words.push_back(0);

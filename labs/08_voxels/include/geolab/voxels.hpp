@@ -173,7 +173,8 @@ struct ValueGrid {
     GEOLAB_FIELDS(dims, values)
 };
 
-//! Voxel by voxel: max(F1, F2). \throw std::invalid_argument when the dims differ or values.size() ≠ dims.count().
+//! Voxel by voxel: max(F1, F2). \throw std::invalid_argument when the dims differ, a size is negative or
+//! values.size() ≠ dims.count().
 ValueGrid csg_union(const ValueGrid& f1, const ValueGrid& f2);
 //! min(F1, F2). Same errors.
 ValueGrid csg_intersection(const ValueGrid& f1, const ValueGrid& f2);
