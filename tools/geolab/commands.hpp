@@ -39,5 +39,6 @@ void add_quadric(CLI::App& app, int& status);
 void add_blobby(CLI::App& app, int& status);
 void add_sweep(CLI::App& app, int& status);
 void add_csg(CLI::App& app, int& status);
+void add_voxelize(CLI::App& app, int& status);
 
 }  // namespace geolab::cli

@@ -54,6 +54,7 @@ int main(int argc, char** argv) {
     geolab::cli::add_blobby(app, status);
     geolab::cli::add_sweep(app, status);
     geolab::cli::add_csg(app, status);
+    geolab::cli::add_voxelize(app, status);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

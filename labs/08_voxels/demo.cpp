@@ -1,0 +1,270 @@
+// Lab 08 demo: a mesh voxelized at a resolution chosen with + / −, its surface or solid voxels drawn as cubes (only
+// the faces between a set and an unset voxel), cut by a section plane z = const that [ and ] move. Headless:
+// --png FILE renders the current view; --figures DIR renders the handout's figures.
+//
+// The same file runs against the student's code and the reference: it calls only the lab's public API and lib.
+// A function that throws geolab::NotImplemented is named in the status line; what does not need it still shows.
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "geolab/io.hpp"
+#include "geolab/models.hpp"
+#include "geolab/render/demo.hpp"
+#include "geolab/render/render.hpp"
+#include "geolab/voxels.hpp"
+
+namespace {
+
+using namespace geolab::voxels;
+using geolab::PolygonSoup;
+namespace gr = geolab::render;
+using glm::vec3;
+
+const vec3 kVoxel{0.80f, 0.80f, 0.83f};    // voxel faces: grey
+const vec3 kCut{0.95f, 0.55f, 0.10f};      // faces on the section plane: orange
+const vec3 kMeshWire{0.15f, 0.35f, 0.85f};  // the input mesh's edges: blue
+
+const char* kKeys =
+    "Window keys:\n"
+    "  + / -           resolution x 2 / x 1/2 (8 .. 256)\n"
+    "  [ / ]           move the section plane down / up one voxel layer\n"
+    "  V               surface / solid voxels\n"
+    "  M               the mesh's edges on / off\n"
+    "  Home, S, Esc    re-frame, screenshot (out/screenshots/), quit";
+
+// The visible faces of the set voxels with k < k_cut (the section: voxels above it are not drawn), as quads in world
+// coordinates; faces lying on the section plane are listed in `cut`.
+PolygonSoup voxel_faces(const BitGrid& g, const Grid& grid, std::int64_t k_cut, std::vector<vec3>& colors) {
+    PolygonSoup s;
+    const Dims d = g.dims;
+    auto on = [&](std::int64_t i, std::int64_t j, std::int64_t k) {
+        return i >= 0 && j >= 0 && k >= 0 && i < d.nx && j < d.ny && k < d.nz && k < k_cut && g.get(i, j, k);
+    };
+    const int dirs[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    for (std::int64_t k = 0; k < std::min(k_cut, d.nz); ++k)
+        for (std::int64_t j = 0; j < d.ny; ++j)
+            for (std::int64_t i = 0; i < d.nx; ++i) {
+                if (!g.get(i, j, k)) continue;
+                for (const auto& dir : dirs) {
+                    if (on(i + dir[0], j + dir[1], k + dir[2])) continue;
+                    // the face's four corners, counter-clockwise seen from outside
+                    const int a = dir[0] != 0 ? 0 : dir[1] != 0 ? 1 : 2;  // the face's normal axis
+                    const int b = (a + 1) % 3, c = (a + 2) % 3;
+                    const bool positive = dir[a] > 0;
+                    glm::dvec3 corner[4];
+                    const double base[3] = {double(i), double(j), double(k)};
+                    for (int q = 0; q < 4; ++q) {
+                        glm::dvec3 p(base[0], base[1], base[2]);
+                        p[a] += positive ? 1 : 0;
+                        const int u = (q == 1 || q == 2), v = (q >= 2);
+                        p[b] += positive ? u : v;
+                        p[c] += positive ? v : u;
+                        corner[q] = grid.origin + grid.voxel_size * p;
+                    }
+                    const auto n = std::uint32_t(s.positions.size());
+                    for (const auto& p : corner) s.positions.push_back(p);
+                    s.add_face({n, n + 1, n + 2, n + 3});
+                    const bool cut = a == 2 && positive && k + 1 == k_cut && k + 1 < d.nz && g.get(i, j, k + 1);
+                    colors.push_back(cut ? kCut : kVoxel);
+                }
+            }
+    return s;
+}
+
+struct Demo {
+    PolygonSoup mesh;
+    std::string name;
+    std::int64_t res = 64;
+    bool solid = true, show_mesh = false;
+    double cut = 0.55;  // the section plane's height, as a fraction of the grid
+};
+
+gr::Frame draw(const Demo& d, float yaw = 30.0f, float pitch = 25.0f) {
+    gr::Frame fr;
+    gr::Issues issues;
+    const Grid grid = fit_grid(d.mesh, d.res, 1);
+    const PolygonSoup u = to_grid_units(d.mesh, grid);
+    std::string counts;
+    BitGrid g;
+    gr::attempt(issues, d.solid ? "voxelize_solid" : "voxelize_surface", [&] {
+        if (d.solid) {
+            const SolidResult r = voxelize_solid(u, grid.dims, 2);
+            g = r.grid;
+            counts = (r.method == SolidMethod::parity ? "parity" : "flood fill (open mesh)");
+        } else {
+            g = voxelize_surface(u, grid.dims, 2);
+            counts = "surface";
+        }
+    });
+    const auto k_cut = std::int64_t(d.cut * double(d.res) + 0.5);
+    if (!g.words.empty()) {
+        std::vector<vec3> colors;
+        const PolygonSoup faces = voxel_faces(g, grid, k_cut, colors);
+        if (faces.n_faces() > 0) fr.scene.add_mesh_face_colors(faces, colors, {.smooth = false});
+        std::uint64_t n = 0;
+        for (auto w : g.words) n += std::uint64_t(__builtin_popcountll(w));
+        counts += ", " + std::to_string(n) + " voxels";
+    }
+    if (d.show_mesh || g.words.empty()) fr.scene.add_mesh(d.mesh, {.color = {0.9f, 0.9f, 0.95f}, .smooth = false, .wireframe = true, .wire_color = kMeshWire, .opacity = g.words.empty() ? 1.0f : 0.25f});
+    fr.camera = gr::whole(fr.scene, 4.0 / 3.0, yaw, pitch);
+    fr.status = d.name + " at " + std::to_string(d.res) + "³: " + counts + "; section at layer " + std::to_string(k_cut) +
+                (issues.any() ? " | " + issues.str() : "");
+    return fr;
+}
+
+bool on_key(Demo& d, int key) {
+    if (key == '+' || key == '=') d.res = std::min<std::int64_t>(256, d.res * 2);
+    if (key == '-') d.res = std::max<std::int64_t>(8, d.res / 2);
+    if (key == '[') d.cut = std::max(0.0, d.cut - 1.0 / double(d.res));
+    if (key == ']') d.cut = std::min(1.0, d.cut + 1.0 / double(d.res));
+    if (key == 'V') d.solid = !d.solid;
+    if (key == 'M') d.show_mesh = !d.show_mesh;
+    return key == '+' || key == '=' || key == '-';
+}
+
+PolygonSoup load(const std::string& name) {
+    if (const auto p = geolab::model_path(name)) return geolab::read_mesh(*p);
+    return geolab::read_mesh(name);
+}
+
+gr::Image render(const gr::Frame& f, int w, int h) { return gr::render_image(f.scene, f.camera, w, h); }
+
+int render_figures(gr::FigureWriter w) {
+    const auto bunny = gr::first_model({"bunny00"});
+    if (!bunny) {
+        w.skip("surface_vs_solid.png", "bunny00 not fetched (tools/fetch_models.sh)");
+        return w.finish();
+    }
+    Demo d{load(*bunny), *bunny};
+    const int pw = 480, ph = 400;
+    // surface vs solid, cut at the middle
+    d.res = 64;
+    d.cut = 0.5;
+    d.solid = false;
+    const gr::Image surf = render(draw(d), pw, ph);
+    d.solid = true;
+    const gr::Image sol = render(draw(d), pw, ph);
+    w.write("surface_vs_solid.png", gr::hstack({surf, sol}, 4), "bunny00 at 64³ cut at half height: surface voxels (left), solid voxels (right)");
+    // sections of the bunny
+    std::vector<gr::Image> secs;
+    for (double c : {0.3, 0.5, 0.7}) {
+        d.cut = c;
+        secs.push_back(render(draw(d, 20.0f, 55.0f), pw, ph));
+    }
+    w.write("bunny_sections.png", gr::hstack(secs, 4), "bunny00 solid at 64³, sections at 30 %, 50 %, 70 % of the height");
+    // per-axis parity: the three parity fills of the bunny, cut at the middle
+    {
+        const Grid grid = fit_grid(d.mesh, 48, 1);
+        const PolygonSoup u = to_grid_units(d.mesh, grid);
+        std::vector<gr::Image> panels;
+        for (int axis = 0; axis < 3; ++axis) {
+            gr::Frame fr;
+            gr::Issues issues;
+            gr::attempt(issues, "parity_fill", [&] {
+                std::vector<vec3> colors;
+                const PolygonSoup faces = voxel_faces(parity_fill(u, grid.dims, axis, 2), grid, 24, colors);
+                fr.scene.add_mesh_face_colors(faces, colors, {.smooth = false});
+            });
+            if (issues.any()) return w.finish();
+            fr.camera = gr::whole(fr.scene, double(pw) / ph, 30.0f, 25.0f);
+            panels.push_back(render(fr, pw, ph));
+        }
+        w.write("per_axis_parity.png", gr::hstack(panels, 4), "bunny00 at 48³: parity along x, y and z (identical voxel for voxel), cut at layer 24");
+    }
+    // a tie case: an octahedron whose vertices are voxel centres (rays through its vertices and edges)
+    {
+        const PolygonSoup oct = [] {
+            PolygonSoup s;
+            const glm::dvec3 c(4.5, 4.5, 4.5);
+            const double r = 3;
+            s.positions = {c + glm::dvec3(r, 0, 0), c - glm::dvec3(r, 0, 0), c + glm::dvec3(0, r, 0),
+                           c - glm::dvec3(0, r, 0), c + glm::dvec3(0, 0, r), c - glm::dvec3(0, 0, r)};
+            for (std::uint32_t xi : {0u, 1u})
+                for (std::uint32_t yi : {2u, 3u})
+                    for (std::uint32_t zi : {4u, 5u}) {
+                        const double sgn = (xi == 0 ? 1 : -1) * (yi == 2 ? 1 : -1) * (zi == 4 ? 1 : -1);
+                        if (sgn > 0) s.add_face({xi, yi, zi});
+                        else s.add_face({xi, zi, yi});
+                    }
+            return s;
+        }();
+        Grid grid;
+        grid.dims = {9, 9, 9};
+        gr::Frame fr;
+        gr::Issues issues;
+        gr::attempt(issues, "parity_fill", [&] {
+            std::vector<vec3> colors;
+            const PolygonSoup faces = voxel_faces(parity_fill(oct, grid.dims, 2, 1), grid, 5, colors);
+            fr.scene.add_mesh_face_colors(faces, colors, {.smooth = false, .wireframe = true, .wire_color = {0.3f, 0.3f, 0.3f}});
+        });
+        fr.scene.add_mesh(oct, {.color = {0.9f, 0.9f, 0.95f}, .smooth = false, .wireframe = true, .wire_color = kMeshWire, .opacity = 0.2f});
+        fr.camera = gr::whole(fr.scene, 4.0 / 3.0, 30.0f, 35.0f);
+        w.write("tie_case.png", fr.scene, fr.camera, "octahedron |x−4.5|+|y−4.5|+|z−4.5| = 3 in 9³: every vertex is a voxel centre; cut at layer 5");
+    }
+    // voxel CSG of two spheres: union, intersection, difference of the packed solids
+    {
+        const Grid grid{{0, 0, 0}, 1.0, {40, 40, 40}};
+        auto sphere = [](glm::dvec3 c, double r) {
+            // an octahedron subdivided twice and pushed to the sphere
+            PolygonSoup s;
+            std::vector<glm::dvec3> p = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+            std::vector<std::array<std::uint32_t, 3>> f = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+            for (int l = 0; l < 4; ++l) {
+                std::vector<std::array<std::uint32_t, 3>> g;
+                for (auto& t : f) {
+                    const auto a = std::uint32_t(p.size());
+                    p.push_back(glm::normalize(p[t[0]] + p[t[1]]));
+                    p.push_back(glm::normalize(p[t[1]] + p[t[2]]));
+                    p.push_back(glm::normalize(p[t[2]] + p[t[0]]));
+                    g.push_back({t[0], a, a + 2});
+                    g.push_back({t[1], a + 1, a});
+                    g.push_back({t[2], a + 2, a + 1});
+                    g.push_back({a, a + 1, a + 2});
+                }
+                f = g;
+            }
+            for (auto& q : p) s.positions.push_back(c + r * q);
+            for (auto& t : f) s.add_face({t[0], t[1], t[2]});
+            return s;
+        };
+        std::vector<gr::Image> panels;
+        gr::Issues issues;
+        gr::attempt(issues, "bits_union", [&] {
+            // triangles have their own vertices (not shared): fine for parity, whose edges pair up by position
+            const BitGrid a = voxelize_solid(sphere({16, 20, 20}, 11), grid.dims, 2).grid;
+            const BitGrid b = voxelize_solid(sphere({25, 20, 20}, 9), grid.dims, 2).grid;
+            for (const BitGrid& g : {bits_union(a, b), bits_intersection(a, b), bits_difference(a, b)}) {
+                gr::Frame fr;
+                std::vector<vec3> colors;
+                fr.scene.add_mesh_face_colors(voxel_faces(g, grid, 20, colors), colors, {.smooth = false});
+                fr.camera = gr::whole(fr.scene, double(pw) / ph, 25.0f, 35.0f);
+                panels.push_back(render(fr, pw, ph));
+            }
+        });
+        if (!panels.empty())
+            w.write("csg.png", gr::hstack(panels, 4), "two voxelized spheres (40³): A ∪ B, A ∩ B, A − B, cut at layer 20");
+        else
+            w.skip("csg.png", issues.str());
+    }
+    return w.finish();
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+    gr::DemoProgram program("demo_08_voxels", "Lab 08 demo: a mesh voxelized at a chosen resolution, cut by a section plane", kKeys);
+    std::string mesh = "bunny00";
+    std::int64_t res = 64;
+    program.cli().add_option("--mesh", mesh, "A mesh file or a fetched model's name")->capture_default_str();
+    program.cli().add_option("--res", res, "Voxels along the longest side")->check(CLI::Range(std::int64_t(4), std::int64_t(512)))->capture_default_str();
+    if (const auto status = program.parse(argc, argv)) return *status;
+    return program.run([&] {
+        if (!program.figures().empty()) return render_figures(program.figure_writer());
+        Demo d{load(mesh), mesh};
+        d.res = res;
+        if (!program.png().empty()) return program.write_png(draw(d));
+        return program.show({.title = "geolab demo 08: voxelization",
+                             .draw = [&] { return draw(d); },
+                             .key = [&](int key) { return on_key(d, key); }});
+    });
+}

@@ -1,0 +1,250 @@
+#pragma once
+//! \file voxels.hpp
+//! Lab 08 — voxelization: YOUR TASKS. Write these functions in labs/08_voxels/src/*.cpp (one file per task).
+//!
+//! | task | file         | functions                                              | lecture ↔ code                         | handout |
+//! |------|--------------|--------------------------------------------------------|----------------------------------------|---------|
+//! | 1    | bitgrid.cpp  | voxel_index, count_set                                 | 1 bit per voxel, 64-bit indices        | §2      |
+//! | 2    | sat.cpp      | triangle_overlaps_voxel                                | separating axes (Akenine-Möller 2001)  | §3      |
+//! | 3    | surface.cpp  | voxelize_surface                                       | every voxel a triangle meets           | §4      |
+//! | 4    | solid.cpp    | parity_fill, count_boundary_edges, flood_fill_solid,   | parity along a ray, exact ties;        | §5      |
+//! |      |              | voxelize_solid                                         | outside flood fill for open meshes     |         |
+//! | 5    | csg.cpp      | csg_union, csg_intersection, csg_add, csg_subtract,    | max, min, C1·F1 + C2·F2, max(F1−F2, 0);| §6      |
+//! |      |              | bits_union, bits_intersection, bits_difference,        | bitwise on packed grids                |         |
+//! |      |              | bits_complement                                        |                                        |         |
+//! | 6    | binvox.cpp   | encode_binvox, decode_binvox                           | x, z, y order, run-length pairs        | §7      |
+//!
+//! Given (read, do not write; given.cpp and this header): the grid's geometry (Grid, fit_grid, to_grid_units), the
+//! packed grid's layout and accessors (BitGrid::get/set), file wrappers (read_binvox, write_binvox).
+//!
+//! **Grid units.** Every task works in grid units: voxel (i, j, k) is the closed box [i, i+1] × [j, j+1] × [k, k+1]
+//! and its centre is (i + ½, j + ½, k + ½). to_grid_units() maps a mesh from world coordinates (Grid) there; the
+//! results are exact functions of those double coordinates (the tie rules below decide every exact contact).
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <glm/common.hpp>
+#include <glm/vec3.hpp>
+
+#include "geolab/boundary.hpp"
+#include "geolab/errors.hpp"
+#include "geolab/soup.hpp"
+
+namespace geolab::voxels {
+
+//! The number of voxels along x, y and z (each ≥ 0). 64-bit: 2048³ voxels is 2³³, beyond 32-bit indices.
+struct Dims {
+    std::int64_t nx = 0, ny = 0, nz = 0;
+    GEOLAB_FIELDS(nx, ny, nz)
+    std::int64_t count() const { return nx * ny * nz; }  //!< nx·ny·nz (given)
+    bool operator==(const Dims&) const = default;
+};
+
+//! A grid of 1-bit voxels, packed (given layout). Voxel (i, j, k) has the linear index
+//!     index = i + nx·(j + ny·k)            (x fastest, then y, then z; computed in 64-bit arithmetic)
+//! and is bit (index mod 64) of words[index / 64]. words.size() = ⌈nx·ny·nz / 64⌉, and the bits past the last
+//! voxel in the last word are always 0 (every function that returns a BitGrid keeps that true).
+struct BitGrid {
+    Dims dims;
+    std::vector<std::uint64_t> words;
+    GEOLAB_FIELDS(dims, words)
+
+    BitGrid() = default;
+    //! An all-empty grid of these dimensions (given). \throw std::invalid_argument on a negative size, or when
+    //! nx·ny·nz overflows 64 bits or exceeds 2⁴⁰ voxels (128 GiB of bits).
+    explicit BitGrid(Dims d);
+    //! The bit of voxel (i, j, k) (given; no bounds check).
+    bool get(std::int64_t i, std::int64_t j, std::int64_t k) const {
+        const std::uint64_t n = std::uint64_t(i) + std::uint64_t(dims.nx) * (std::uint64_t(j) + std::uint64_t(dims.ny) * std::uint64_t(k));
+        return (words[n >> 6] >> (n & 63)) & 1u;
+    }
+    //! Sets voxel (i, j, k) to v (given; no bounds check; not thread-safe: two threads writing the same word race).
+    void set(std::int64_t i, std::int64_t j, std::int64_t k, bool v = true) {
+        const std::uint64_t n = std::uint64_t(i) + std::uint64_t(dims.nx) * (std::uint64_t(j) + std::uint64_t(dims.ny) * std::uint64_t(k));
+        if (v)
+            words[n >> 6] |= std::uint64_t(1) << (n & 63);
+        else
+            words[n >> 6] &= ~(std::uint64_t(1) << (n & 63));
+    }
+    bool operator==(const BitGrid&) const = default;
+};
+
+//! Where a grid sits in the world (given): voxel (i, j, k) covers origin + voxel_size·[i, i+1] × ... .
+struct Grid {
+    glm::dvec3 origin{0.0};
+    double voxel_size = 1.0;
+    Dims dims;
+    GEOLAB_FIELDS(origin, voxel_size, dims)
+};
+
+//! A cubic grid res × res × res around the mesh's bounding box (given): cubic voxels, the box's longest side
+//! spans res − 2·pad voxels and the box is centred, so `pad` empty layers surround the mesh on every side.
+//! \throw std::invalid_argument when the mesh has no vertex, is a single point, res < 1 or res ≤ 2·pad.
+Grid fit_grid(const PolygonSoup& mesh, std::int64_t res, int pad = 1);
+
+//! The mesh in grid units: every position p becomes (p − origin) / voxel_size (given; faces unchanged).
+PolygonSoup to_grid_units(const PolygonSoup& mesh, const Grid& grid);
+
+// ==== Task 1: the packed grid (handout §2) ===================================================================
+
+//! The linear index i + nx·(j + ny·k) of voxel (i, j, k), in 64-bit unsigned arithmetic, never overflowing for
+//! any grid BitGrid accepts (up to 2⁴⁰ voxels). \throw std::out_of_range when (i, j, k) is outside the grid
+//! (any coordinate < 0 or ≥ its size).
+std::uint64_t voxel_index(const Dims& dims, std::int64_t i, std::int64_t j, std::int64_t k);
+
+//! The number of set voxels. \throw std::invalid_argument when words.size() ≠ ⌈count / 64⌉.
+std::uint64_t count_set(const BitGrid& grid);
+
+// ==== Task 2: the triangle–box test (handout §3) ==============================================================
+
+//! Whether triangle (a, b, c) (grid units) belongs to voxel (i, j, k) = [i, i+1] × [j, j+1] × [k, k+1].
+//! The rule (so that a closed mesh whose faces lie on voxel planes gets no extra layer):
+//! - A triangle lying in a voxel plane (its three vertices have the same integer coordinate x = m, or y = m, or
+//!   z = m) belongs to the voxels of the layer on the side its normal (b − a) × (c − a) points away from (layer
+//!   m − 1 for a normal along +x, layer m for −x), namely those whose square, in that plane, meets the triangle in
+//!   a set of positive area (an open square: touching its border only does not count).
+//! - Any other triangle belongs to the voxels whose open interior (i, i+1) × (j, j+1) × (k, k+1) it meets:
+//!   touching a voxel's faces, edges or corners only does not count.
+//! - A triangle of zero area (three collinear or coincident points) belongs to no voxel.
+//! Decide it by the separating axis theorem (handout §3: 13 axes — the box's 3 face normals, the triangle's normal
+//! and the 9 cross products of the box's edges with the triangle's edges); a projection that only touches the
+//! box's counts as separating. Double precision, no tolerance.
+bool triangle_overlaps_voxel(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, std::int64_t i,
+                             std::int64_t j, std::int64_t k);
+
+// ==== Task 3: surface voxelization (handout §4) ===============================================================
+
+//! Every voxel of a dims-sized grid that some face of `mesh` (grid units; a face of k vertices is the fan of
+//! triangles (v0, vi, vi+1)) belongs to, by triangle_overlaps_voxel's rule. Parts of the mesh outside the grid
+//! are ignored. Test only the voxels of each triangle's bounding box. `threads` ≥ 1 workers (std::thread); the
+//! result is the same for every thread count (two threads never write the same word unsynchronised).
+//! \throw std::invalid_argument when threads < 1 or the soup is invalid (check_soup).
+BitGrid voxelize_surface(const PolygonSoup& mesh, const Dims& dims, int threads = 1);
+
+// ==== Task 4: solid voxelization (handout §5) =================================================================
+
+//! Parity along `axis` (0 = x, 1 = y, 2 = z): voxel v is set when the ray from v's centre towards −axis crosses the
+//! mesh's triangles an odd number of times. Ties are broken by simulation of simplicity: the centre c is moved to
+//! c + (ε, ε², ε³) for an infinitely small ε > 0 (the same point for all three axes), so that no ray meets an
+//! edge or vertex and no centre lies on a triangle. With orient2d/orient3d of geolab/predicates.hpp this is exact:
+//! on a closed mesh (count_boundary_edges = 0) the three axes give the same grid, voxel for voxel. Triangles
+//! whose projection along the axis has zero area are never crossed. Parts of the mesh outside the grid count
+//! (a triangle below the grid flips whole columns). Same threads contract as voxelize_surface.
+//! \throw std::invalid_argument when axis ∉ {0, 1, 2}, threads < 1 or the soup is invalid.
+BitGrid parity_fill(const PolygonSoup& mesh, const Dims& dims, int axis, int threads = 1);
+
+//! The number of undirected edges used by an odd number of triangles (of the fan triangulation; vertices at
+//! exactly the same position are one vertex; edges of zero-area triangles count too, an edge from a vertex to
+//! itself does not). 0 means the mesh is
+//! closed modulo 2, which is what parity needs. \throw std::invalid_argument when the soup is invalid.
+std::uint64_t count_boundary_edges(const PolygonSoup& mesh);
+
+//! The solid of a surface voxelization with holes: every voxel that cannot be reached from outside the grid
+//! through 6-connected unset voxels. Set voxels stay set; an unset voxel on the grid's border is reached.
+BitGrid flood_fill_solid(const BitGrid& surface);
+
+//! How voxelize_solid decided.
+enum class SolidMethod : int {
+    parity,      //!< closed mesh: the voxels all three parity_fill axes set
+    flood_fill,  //!< open mesh (boundary edges): flood_fill_solid of the surface voxelization
+};
+
+//! What voxelize_solid returns.
+struct SolidResult {
+    BitGrid grid;                        //!< the solid voxels
+    SolidMethod method = SolidMethod::parity;
+    std::uint64_t boundary_edges = 0;    //!< count_boundary_edges(mesh)
+    std::uint64_t axis_disagreements = 0;  //!< parity: voxels not set by all three axes or by none (0 when closed)
+    GEOLAB_FIELDS(grid, method, boundary_edges, axis_disagreements)
+};
+
+//! Solid voxelization: parity (the voxels set by all three axes) when count_boundary_edges(mesh) = 0, else the
+//! outside flood fill of voxelize_surface (reported in `method`). Same threads contract.
+SolidResult voxelize_solid(const PolygonSoup& mesh, const Dims& dims, int threads = 1);
+
+// ==== Task 5: voxel CSG (handout §6) ==========================================================================
+
+//! A grid of values (density, occupancy in [0, 1], ...), x fastest like BitGrid: values[i + nx·(j + ny·k)].
+struct ValueGrid {
+    Dims dims;
+    std::vector<double> values;
+    GEOLAB_FIELDS(dims, values)
+};
+
+//! Voxel by voxel: max(F1, F2). \throw std::invalid_argument when the dims differ, a size is negative or
+//! values.size() ≠ dims.count().
+ValueGrid csg_union(const ValueGrid& f1, const ValueGrid& f2);
+//! min(F1, F2). Same errors.
+ValueGrid csg_intersection(const ValueGrid& f1, const ValueGrid& f2);
+//! C1·F1 + C2·F2. Same errors.
+ValueGrid csg_add(const ValueGrid& f1, const ValueGrid& f2, double c1, double c2);
+//! max(F1 − F2, 0). Same errors.
+ValueGrid csg_subtract(const ValueGrid& f1, const ValueGrid& f2);
+
+//! A | B, word by word. \throw std::invalid_argument when the dims differ or a words vector has the wrong size.
+BitGrid bits_union(const BitGrid& a, const BitGrid& b);
+//! A & B. Same errors.
+BitGrid bits_intersection(const BitGrid& a, const BitGrid& b);
+//! A & ~B. Same errors.
+BitGrid bits_difference(const BitGrid& a, const BitGrid& b);
+//! ~A, with the bits past the last voxel kept 0. \throw std::invalid_argument on a wrong words size.
+BitGrid bits_complement(const BitGrid& a);
+
+// ==== Task 6: .binvox (handout §7) ============================================================================
+
+//! A .binvox file: a cubic grid (nx = ny = nz) plus the normalization it records: voxel (i, j, k)'s centre is at
+//! translate + scale · ((i + ½, j + ½, k + ½) / n) in the mesh's coordinates.
+struct Binvox {
+    BitGrid grid;
+    glm::dvec3 translate{0.0};
+    double scale = 1.0;
+    GEOLAB_FIELDS(grid, translate, scale)
+};
+
+//! The bytes of the .binvox file (format version 1): the ASCII header "#binvox 1\n", "dim n n n\n",
+//! "translate tx ty tz\n", "scale s\n" (numbers with 17 significant digits), "data\n"; then the voxels as
+//! run-length pairs of bytes (value 0 or 1, count 1..255), voxel order x slowest, then z, then y fastest: file
+//! position x·n² + z·n + y holds voxel (i, j, k) = (x, y, z). Each run as long as possible (at most 255).
+//! \throw std::invalid_argument when the grid is not cubic, is empty (n = 0), its words have the wrong size, or
+//! translate or scale is not finite.
+std::string encode_binvox(const Binvox& file);
+
+//! Reads the bytes of a .binvox file: first line "#binvox 1" (or 2: any non-zero value is a set voxel); then
+//! lines "dim d h w" (required, d = h = w ≥ 1), "translate tx ty tz" and "scale s" (optional, each at most once,
+//! any order; default 0 0 0 and 1), then "data"; then run-length pairs covering exactly n³ voxels, nothing after.
+//! Hostile input (a missing or repeated line, a bad number, a count 0, runs past n³ or short of it, a truncated
+//! pair, trailing bytes, non-cubic dims, a header that promises more voxels than its pairs can hold) throws
+//! geolab::IoError(name, line, reason) — line = the header line, or 0 in the data — before allocating the grid.
+Binvox decode_binvox(const std::string& bytes, const std::string& name = "<memory>");
+
+//! File wrappers (given): write_binvox writes encode_binvox's bytes; read_binvox reads a file (at most
+//! 64 MiB + header) and decodes it. \throw geolab::IoError when the file cannot be opened or read.
+void write_binvox(const std::filesystem::path& path, const Binvox& file);
+Binvox read_binvox(const std::filesystem::path& path);
+
+// ==== The grading boundary (for the grader; nothing to do for you) ===========================================
+#ifdef GEOLAB_BOUNDARY
+GEOLAB_BOUNDARY(voxel_index, std::uint64_t(const Dims&, std::int64_t, std::int64_t, std::int64_t))
+GEOLAB_BOUNDARY(count_set, std::uint64_t(const BitGrid&))
+GEOLAB_BOUNDARY(triangle_overlaps_voxel, bool(const glm::dvec3&, const glm::dvec3&, const glm::dvec3&, std::int64_t,
+                                              std::int64_t, std::int64_t))
+GEOLAB_BOUNDARY(voxelize_surface, BitGrid(const PolygonSoup&, const Dims&, int))
+GEOLAB_BOUNDARY(parity_fill, BitGrid(const PolygonSoup&, const Dims&, int, int))
+GEOLAB_BOUNDARY(count_boundary_edges, std::uint64_t(const PolygonSoup&))
+GEOLAB_BOUNDARY(flood_fill_solid, BitGrid(const BitGrid&))
+GEOLAB_BOUNDARY(voxelize_solid, SolidResult(const PolygonSoup&, const Dims&, int))
+GEOLAB_BOUNDARY(csg_union, ValueGrid(const ValueGrid&, const ValueGrid&))
+GEOLAB_BOUNDARY(csg_intersection, ValueGrid(const ValueGrid&, const ValueGrid&))
+GEOLAB_BOUNDARY(csg_add, ValueGrid(const ValueGrid&, const ValueGrid&, double, double))
+GEOLAB_BOUNDARY(csg_subtract, ValueGrid(const ValueGrid&, const ValueGrid&))
+GEOLAB_BOUNDARY(bits_union, BitGrid(const BitGrid&, const BitGrid&))
+GEOLAB_BOUNDARY(bits_intersection, BitGrid(const BitGrid&, const BitGrid&))
+GEOLAB_BOUNDARY(bits_difference, BitGrid(const BitGrid&, const BitGrid&))
+GEOLAB_BOUNDARY(bits_complement, BitGrid(const BitGrid&))
+GEOLAB_BOUNDARY(encode_binvox, std::string(const Binvox&))
+GEOLAB_BOUNDARY(decode_binvox, Binvox(const std::string&, const std::string&))
+#endif
+
+}  // namespace geolab::voxels
