@@ -252,7 +252,7 @@ int render_figures(gr::FigureWriter w) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    gr::DemoProgram program("demo_08_voxels", "Lab 08 demo: a mesh voxelized at a chosen resolution, cut by a section plane", kKeys);
+    gr::DemoProgram program("demo_08_voxelize", "Lab 08 demo: a mesh voxelized at a chosen resolution, cut by a section plane", kKeys);
     std::string mesh = "bunny00";
     std::int64_t res = 64;
     program.cli().add_option("--mesh", mesh, "A mesh file or a fetched model's name")->capture_default_str();

@@ -1,6 +1,6 @@
 #pragma once
 //! \file voxels.hpp
-//! Lab 08 — voxelization: YOUR TASKS. Write these functions in labs/08_voxels/src/*.cpp (one file per task).
+//! Lab 08 — voxelization: YOUR TASKS. Write these functions in labs/08_voxelize/src/*.cpp (one file per task).
 //!
 //! | task | file         | functions                                              | lecture ↔ code                         | handout |
 //! |------|--------------|--------------------------------------------------------|----------------------------------------|---------|
