@@ -99,6 +99,7 @@ blobby::BlobScene parse_scene(const std::string& file) {
 struct Opts {
     std::string scene, out;
     int res = 64;
+    bool json = false;  // one JSON object with the figures instead of the text lines
 };
 
 int run(const Opts& o) {
@@ -120,11 +121,29 @@ int run(const Opts& o) {
     const auto t2 = std::chrono::steady_clock::now();
     write_mesh(o.out, m.soup);
     const double samples = double(n.x) * n.y * n.z;
+    const double sample_seconds = std::chrono::duration<double>(t1 - t0).count(),
+                 polygonize_seconds = std::chrono::duration<double>(t2 - t1).count();
+    if (o.json) {
+        std::cout << nlohmann::json{{"scene", o.scene},
+                                    {"kernel", blobby::kernel_name(s.kernel)},
+                                    {"blobs", s.blobs.size()},
+                                    {"threshold", s.threshold},
+                                    {"lattice", {n.x, n.y, n.z}},
+                                    {"cell", h},
+                                    {"kernel_evaluations_per_sample", evals / samples},
+                                    {"sample_seconds", sample_seconds},
+                                    {"polygonize_seconds", polygonize_seconds},
+                                    {"vertices", m.soup.n_vertices()},
+                                    {"triangles", m.soup.n_faces()},
+                                    {"out", o.out}}
+                         .dump()
+                  << "\n";
+        return 0;
+    }
     std::cout << blobby::kernel_name(s.kernel) << " scene of " << s.blobs.size() << " blobs, T " << s.threshold << "\n"
               << "lattice " << n.x << "x" << n.y << "x" << n.z << " (cell " << h << "), " << evals / samples
               << " kernel evaluations per sample\n"
-              << "sampled in " << std::chrono::duration<double>(t1 - t0).count() << " s, polygonized in "
-              << std::chrono::duration<double>(t2 - t1).count() << " s\n"
+              << "sampled in " << sample_seconds << " s, polygonized in " << polygonize_seconds << " s\n"
               << m.soup.n_vertices() << " vertices, " << m.soup.n_faces() << " triangles -> " << o.out << "\n";
     return 0;
 }
@@ -142,6 +161,7 @@ void add_blobby(CLI::App& app, int& status) {
         ->required();
     c->add_option("--res", o->res, "Lattice cells along the scene's longest side")->check(CLI::Range(2, 1024))->capture_default_str();
     c->add_option("--out", o->out, "The mesh to write (.obj, .off, .ply, .stl)")->required();
+    c->add_flag("--json", o->json, "Print one JSON object with the figures (stable names) instead of the text lines");
     c->callback([o, &status] {
         try {
             status = run(*o);

@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "commands.hpp"
 #include "geolab/errors.hpp"
 #include "geolab/io.hpp"
@@ -34,7 +36,7 @@ struct SweepOpts {
     std::vector<double> helix, trefoil;
     double extrude = 0, revolve_deg = 0, twist = 0, scale = 1;
     int steps = 1, segments = 64;
-    bool force = false;
+    bool force = false, json = false;  // json: one JSON object with the figures instead of the text lines
 };
 
 // Reads the lines of a text file; a parse error names FILE:LINE and the reason.
@@ -144,18 +146,27 @@ int run_sweep(const SweepOpts& o) {
         std::cerr << "geolab sweep: give exactly one of --extrude, --revolve, --path, --helix, --trefoil\n";
         return 2;
     }
+    std::ostringstream discard;
+    std::ostream& out = o.json ? discard : std::cout;
+    nlohmann::json report{{"profile", o.profile}};
     PolygonSoup mesh;
     if (o.extrude != 0) {
+        report["mode"] = "extrude";
         mesh = sweeps::extrude(prof, {{0.0, 0.0, o.extrude}, o.steps, o.twist, o.scale});
     } else if (o.revolve_deg != 0) {
+        report["mode"] = "revolve";
         mesh = sweeps::revolve(prof, {o.segments, o.revolve_deg >= 360 ? 2 * 3.14159265358979323846
                                                                         : o.revolve_deg * 3.14159265358979323846 / 180});
     } else {
         sweeps::Path path = !o.path_file.empty() ? read_path(o.path_file)
                             : !o.helix.empty()   ? sweeps::helix_path(o.helix[0], o.helix[1], o.helix[2], static_cast<int>(o.helix[3]))
                                                  : sweeps::trefoil_path(static_cast<int>(o.trefoil[0]), o.trefoil[1]);
+        report["mode"] = "path";
         const sweeps::SweepCheck c = sweeps::check_sweep(prof, path);
-        std::cout << "profile radius  " << c.profile_radius << ", smallest radius of curvature " << c.min_radius_of_curvature
+        report["profile_radius"] = c.profile_radius;
+        report["min_radius_of_curvature"] = c.min_radius_of_curvature;
+        report["self_intersects"] = c.self_intersects;
+        out << "profile radius  " << c.profile_radius << ", smallest radius of curvature " << c.min_radius_of_curvature
                   << " (sample " << c.at_sample << ")\n";
         if (c.self_intersects && !o.force) {
             std::cerr << "geolab sweep: the sweep would intersect itself at sample " << c.at_sample
@@ -176,18 +187,33 @@ int run_sweep(const SweepOpts& o) {
             const glm::dvec3 t0 = path.tangents[0];
             const sweeps::RmfResult r =
                 sweeps::rotation_minimizing_frames(path, std::abs(t0.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0));
-            if (path.closed) std::cout << "RMF mismatch    " << r.mismatch << " rad (distributed)\n";
+            if (path.closed) {
+                out << "RMF mismatch    " << r.mismatch << " rad (distributed)\n";
+                report["rmf_mismatch"] = r.mismatch;
+            }
             frames = r.frames;
         }
         mesh = sweeps::sweep(prof, path, frames);
     }
     const SurfaceCheck c = check_surface(mesh);
-    std::cout << "mesh            " << c.summary() << "\n"
-              << "volume          " << sweeps::mesh_volume(mesh) << "\n"
-              << "area            " << sweeps::mesh_area(mesh) << "\n"
-              << "closed manifold " << (c.closed_manifold() ? "yes (printable)" : "NO") << "\n";
+    const double volume = sweeps::mesh_volume(mesh), area = sweeps::mesh_area(mesh);
+    out << "mesh            " << c.summary() << "\n"
+        << "volume          " << volume << "\n"
+        << "area            " << area << "\n"
+        << "closed manifold " << (c.closed_manifold() ? "yes (printable)" : "NO") << "\n";
     write_mesh(o.out, mesh);
-    std::cout << "wrote " << o.out << "\n";
+    out << "wrote " << o.out << "\n";
+    if (o.json) {
+        report["vertices"] = c.vertices;
+        report["faces"] = c.faces;
+        report["euler_characteristic"] = c.euler_characteristic;
+        report["components"] = c.components;
+        report["closed_manifold"] = c.closed_manifold();
+        report["volume"] = volume;
+        report["area"] = area;
+        report["out"] = o.out;
+        std::cout << report.dump() << "\n";
+    }
     return c.closed_manifold() ? 0 : 1;
 }
 }  // namespace
@@ -214,6 +240,7 @@ void add_sweep(CLI::App& app, int& status) {
     s->add_option("--trefoil", o->trefoil, "Sweep along the trefoil knot: samples scale")->expected(2);
     s->add_option("--frames", o->frames, "Frames along a path: rmf or frenet")->check(CLI::IsMember({"rmf", "frenet"}))->capture_default_str();
     s->add_flag("--force", o->force, "Write a sweep even when check_sweep reports a self-intersection");
+    s->add_flag("--json", o->json, "Print one JSON object with the figures (stable names) instead of the text lines");
     s->callback([o, &status] {
         try {
             status = run_sweep(*o);
