@@ -18,7 +18,7 @@ unset GEOLAB_MODELS GEOLAB
 
 # The packages checked on all three distributions (see docs/instructor.md, "Gradescope").
 checked="libeigen3-dev libgmp-dev clang-tools build-essential cmake ninja-build pkg-config git unzip zip libglm-dev libglfw3-dev libosmesa6-dev libgl-dev
-         doctest-dev libstb-dev nlohmann-json3-dev libcli11-dev"
+         doctest-dev libstb-dev nlohmann-json3-dev libcli11-dev libfreetype-dev fonts-dejavu-core"
 
 "$geolab" gradescope --lab 01 --out "$scratch/autograder.zip"
 root=$scratch/autograder
