@@ -88,15 +88,16 @@ int run_csg(const CsgOpts& o) {
                   << " samples of the tree's SDF) ...\n";
         const auto t1 = std::chrono::steady_clock::now();
         const PolygonSoup m = csg::mesh_tree(tree, o.res);
+        const double volume = csg::volume(m);
         std::cerr << "polygonized in " << seconds_since(t1) << " s: " << m.n_vertices() << " vertices, "
-                  << m.n_faces() << " triangles, volume " << csg::volume(m) << "\n";
+                  << m.n_faces() << " triangles, volume " << volume << "\n";
         write_mesh(o.mesh, m);
         report["mesh"] = o.mesh;
         report["res"] = o.res;
         report["polygonize_seconds"] = seconds_since(t1);
         report["vertices"] = m.n_vertices();
         report["triangles"] = m.n_faces();
-        report["volume"] = csg::volume(m);
+        report["volume"] = volume;
         if (!o.json) std::cout << "wrote " << o.mesh << "\n";
     }
     if (o.json) std::cout << report.dump() << "\n";

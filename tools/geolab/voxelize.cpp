@@ -75,19 +75,21 @@ int run_voxelize(const VoxelizeOpts& o) {
     report["voxel_size"] = grid.voxel_size;
     st.done("grid", "voxel size " + std::to_string(grid.voxel_size));
     const vx::BitGrid surface = vx::voxelize_surface(u, grid.dims, o.threads);
-    report["surface_voxels"] = vx::count_set(surface);
-    st.done("surface", std::to_string(vx::count_set(surface)) + " voxels");
+    const std::uint64_t surface_voxels = vx::count_set(surface);
+    report["surface_voxels"] = surface_voxels;
+    st.done("surface", std::to_string(surface_voxels) + " voxels");
     vx::BitGrid result = surface;
     if (o.solid) {
         const vx::SolidResult s = vx::voxelize_solid(u, grid.dims, o.threads);
         const bool parity = s.method == vx::SolidMethod::parity;
         const std::string how = parity ? "parity, closed mesh, " + std::to_string(s.axis_disagreements) + " axis disagreements"
                                        : "outside flood fill: the mesh has " + std::to_string(s.boundary_edges) + " boundary edges";
-        report["solid_voxels"] = vx::count_set(s.grid);
+        const std::uint64_t solid_voxels = vx::count_set(s.grid);
+        report["solid_voxels"] = solid_voxels;
         report["solid_method"] = parity ? "parity" : "flood_fill";
         report["axis_disagreements"] = s.axis_disagreements;
         report["boundary_edges"] = s.boundary_edges;
-        st.done("solid", std::to_string(vx::count_set(s.grid)) + " voxels (" + how + ")");
+        st.done("solid", std::to_string(solid_voxels) + " voxels (" + how + ")");
         result = s.grid;
     }
     if (!o.out.empty()) {
@@ -97,8 +99,9 @@ int run_voxelize(const VoxelizeOpts& o) {
         b.scale = grid.voxel_size * double(o.res);
         vx::write_binvox(o.out, b);
         report["out"] = o.out;
-        report["out_bytes"] = std::filesystem::file_size(o.out);
-        st.done("write", o.out + " (" + std::to_string(std::filesystem::file_size(o.out)) + " bytes)");
+        const auto bytes = std::filesystem::file_size(o.out);
+        report["out_bytes"] = bytes;
+        st.done("write", o.out + " (" + std::to_string(bytes) + " bytes)");
     }
     if (o.json) std::cout << report.dump() << "\n";
     return 0;
