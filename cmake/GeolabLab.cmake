@@ -85,10 +85,13 @@ function(geolab_add_lab lab)
     set(bdir ${PROJECT_BINARY_DIR}/boundary/${lab})
     geolab_add_boundary(${nn} ${api_header} ${lab_dir}/include ${bdir})
 
-    # The tests, compiled once for both performers.
+    # The tests, compiled once for both performers and the judge, with the standard library's assertions: hostile
+    # answers that make a test index out of range abort the judge (in a performer they only stop the student's own
+    # run). The assertions change no layout, so these objects link with code built without them.
     add_library(tests_${nn} OBJECT ${test_src})
     target_include_directories(tests_${nn} PRIVATE ${test_dir} ${lab_dir}/include)
     target_link_libraries(tests_${nn} PRIVATE geolab::core geolab::test_main Eigen3::Eigen)
+    target_compile_definitions(tests_${nn} PRIVATE _GLIBCXX_ASSERTIONS)
 
     set(lab_variants lab_${nn})
     if(GEOLAB_HAS_SOLUTIONS AND EXISTS ${sol_dir})
@@ -109,8 +112,7 @@ function(geolab_add_lab lab)
       set_property(TARGET ${program} APPEND PROPERTY LINK_DEPENDS ${bdir}/lib${v}_performer.a)
     endforeach()
 
-    # The judge: the tests again, the lab's GIVEN files (first line says so), the replayer. Built with the
-    # standard library's assertions: hostile answers that make a test index out of range abort the judge.
+    # The judge: the same test objects, the lab's GIVEN files (compiled with the assertions too), the replayer.
     # labs/NN_name/given.txt lists them (the grader and `geolab release --check` read the same list).
     set(given_src "")
     if(EXISTS ${lab_dir}/given.txt)
@@ -122,7 +124,7 @@ function(geolab_add_lab lab)
         endif()
       endforeach()
     endif()
-    add_executable(judge_${lab} ${test_src} ${given_src} ${bdir}/replayer.o)
+    add_executable(judge_${lab} $<TARGET_OBJECTS:tests_${nn}> ${given_src} ${bdir}/replayer.o)
     target_include_directories(judge_${lab} PRIVATE ${test_dir} ${lab_dir}/include)
     target_link_libraries(judge_${lab} PRIVATE $<TARGET_PROPERTY:lab_${nn},INTERFACE_LINK_LIBRARIES> geolab::test_main
                                                      Eigen3::Eigen)
