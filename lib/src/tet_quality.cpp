@@ -14,9 +14,9 @@ double tet_radius_ratio(const glm::dvec3& a, const glm::dvec3& b, const glm::dve
     const double area = 0.5 * (glm::length(glm::cross(u, v)) + glm::length(glm::cross(u, w)) +
                                glm::length(glm::cross(v, w)) + glm::length(glm::cross(c - b, d - b)));
     // circumcentre relative to a: (|u|² v×w + |v|² w×u + |w|² u×v) / (2 det)
-    const glm::dvec3 o = (glm::dot(u, u) * glm::cross(v, w) + glm::dot(v, v) * glm::cross(w, u) +
-                          glm::dot(w, w) * glm::cross(u, v)) /
-                         (2.0 * det);
+    const glm::dvec3 o =
+        (glm::dot(u, u) * glm::cross(v, w) + glm::dot(v, v) * glm::cross(w, u) + glm::dot(w, w) * glm::cross(u, v)) /
+        (2.0 * det);
     const double R = glm::length(o);
     return 9.0 * (det / 6.0) / (area * R);
 }

@@ -26,7 +26,8 @@ void add_lattice(VolumeMesh& m, int n, const glm::dvec3& origin, double size) {
             for (int i = 0; i <= n; ++i) m.positions.push_back(origin + size * glm::dvec3(i, j, k) / double(n));
 }
 
-// The 8 lattice corners of cube (i, j, k) in binary order: corner t = (i + (t & 1), j + (t >> 1 & 1), k + (t >> 2 & 1)).
+// The 8 lattice corners of cube (i, j, k) in binary order: corner t = (i + (t & 1), j + (t >> 1 & 1), k + (t >> 2 &
+// 1)).
 std::array<std::uint32_t, 8> cube_corners(int n, int i, int j, int k) {
     std::array<std::uint32_t, 8> b{};
     for (int t = 0; t < 8; ++t)

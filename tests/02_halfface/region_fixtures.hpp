@@ -33,10 +33,9 @@ inline CellList ring_in_box() {
         for (int j = 0; j < ny; ++j)
             for (int i = 0; i < nx; ++i) {
                 const bool ring = k == 1 && std::max(std::abs(i - 2), std::abs(j - 2)) == 1;
-                const std::array<std::uint32_t, 8> v{index(i, j, k),         index(i + 1, j, k),
-                                                     index(i + 1, j + 1, k),     index(i, j + 1, k),
-                                                     index(i, j, k + 1),     index(i + 1, j, k + 1),
-                                                     index(i + 1, j + 1, k + 1), index(i, j + 1, k + 1)};
+                const std::array<std::uint32_t, 8> v{
+                    index(i, j, k),     index(i + 1, j, k),     index(i + 1, j + 1, k),     index(i, j + 1, k),
+                    index(i, j, k + 1), index(i + 1, j, k + 1), index(i + 1, j + 1, k + 1), index(i, j + 1, k + 1)};
                 c.add_hex(v, ring ? 1 : 0);
             }
     return c;
@@ -244,7 +243,9 @@ inline RegionComplex brute_region_complex(const CellList& cl, const std::vector<
 
 // ---- comparing -------------------------------------------------------------------------------------------------
 
-inline std::string idx_text(std::uint32_t i) { return i == invalid_index ? std::string("outside/none") : std::to_string(i); }
+inline std::string idx_text(std::uint32_t i) {
+    return i == invalid_index ? std::string("outside/none") : std::to_string(i);
+}
 template <class H>
 std::string handles_text(const std::vector<H>& v, std::size_t max = 12) {
     std::ostringstream os;
@@ -278,7 +279,8 @@ inline std::string first_difference(const RegionComplex& want, const RegionCompl
         else if (a.label != b.label)
             os << "region " << i << ": label expected " << a.label << ", got " << b.label;
         else if (a.patches != b.patches)
-            os << "region " << i << ": patches expected " << handles_text(a.patches) << ", got " << handles_text(b.patches);
+            os << "region " << i << ": patches expected " << handles_text(a.patches) << ", got "
+               << handles_text(b.patches);
         if (!os.str().empty()) return os.str();
     }
     for (std::size_t i = 0; i < want.patches.size(); ++i) {
@@ -300,10 +302,11 @@ inline std::string first_difference(const RegionComplex& want, const RegionCompl
         if (a.edges != b.edges)
             os << "curve " << i << ": edges expected " << handles_text(a.edges) << ", got " << handles_text(b.edges);
         else if (a.ends != b.ends)
-            os << "curve " << i << ": ends expected (" << idx_text(a.ends[0]) << ", " << idx_text(a.ends[1]) << "), got ("
-               << idx_text(b.ends[0]) << ", " << idx_text(b.ends[1]) << ")";
+            os << "curve " << i << ": ends expected (" << idx_text(a.ends[0]) << ", " << idx_text(a.ends[1])
+               << "), got (" << idx_text(b.ends[0]) << ", " << idx_text(b.ends[1]) << ")";
         else if (a.patches != b.patches)
-            os << "curve " << i << ": patches expected " << handles_text(a.patches) << ", got " << handles_text(b.patches);
+            os << "curve " << i << ": patches expected " << handles_text(a.patches) << ", got "
+               << handles_text(b.patches);
         if (!os.str().empty()) return os.str();
     }
     for (std::size_t i = 0; i < want.corners.size(); ++i) {

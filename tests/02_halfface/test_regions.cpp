@@ -56,10 +56,12 @@ void check_all_disks(const RegionComplex& rc) {
 }  // namespace
 
 TEST_SUITE("Task 6: regions") {
-    TEST_CASE("regions: the paper's example (a box with a ring-shaped region) gives a sphere χ 2 and a torus χ 0 and no curves" *
-              geolab::points(3) *
-              geolab::hint("Regions by a flood fill through faces whose two cells have the same label; interface faces "
-                           "are those with different regions (or the outside) on their two sides.")) {
+    TEST_CASE(
+        "regions: the paper's example (a box with a ring-shaped region) gives a sphere χ 2 and a torus χ 0 and no "
+        "curves" *
+        geolab::points(3) *
+        geolab::hint("Regions by a flood fill through faces whose two cells have the same label; interface faces "
+                     "are those with different regions (or the outside) on their two sides.")) {
         const Fixture f = region_stored_fixtures()[0];
         const Mesh m = stored_mesh(f);
         const std::vector<std::int32_t>& labels = f.cells.labels;
@@ -68,22 +70,27 @@ TEST_SUITE("Task 6: regions") {
         REQUIRE_MESSAGE((rc.regions.size() == 2 && rc.patches.size() == 2 && rc.curves.empty() && rc.corners.empty()),
                         "expected 2 regions, 2 patches, 0 curves, 0 corners; got " << counts_text(rc));
         // region 0 holds cell 0 (label 0: 67 cubes), region 1 the ring (label 1: 8 cubes)
-        CHECK_MESSAGE((rc.regions[0].label == 0 && rc.regions[0].cells.size() == 67), "region 0: expected label 0 with 67 cells, got label "
-                          << rc.regions[0].label << " with " << rc.regions[0].cells.size());
-        CHECK_MESSAGE((rc.regions[1].label == 1 && rc.regions[1].cells.size() == 8), "region 1: expected label 1 with 8 cells, got label "
-                          << rc.regions[1].label << " with " << rc.regions[1].cells.size());
+        CHECK_MESSAGE((rc.regions[0].label == 0 && rc.regions[0].cells.size() == 67),
+                      "region 0: expected label 0 with 67 cells, got label " << rc.regions[0].label << " with "
+                                                                             << rc.regions[0].cells.size());
+        CHECK_MESSAGE((rc.regions[1].label == 1 && rc.regions[1].cells.size() == 8),
+                      "region 1: expected label 1 with 8 cells, got label " << rc.regions[1].label << " with "
+                                                                            << rc.regions[1].cells.size());
         // patch 0 (face 0 is the bottom of cell 0): the box's surface, 110 quads, V 112, E 220: a sphere
         const Patch& s = rc.patches[0];
-        CHECK_MESSAGE((s.regions == std::array<std::uint32_t, 2>{0, invalid_index}), "patch 0 lies between region 0 and the outside");
+        CHECK_MESSAGE((s.regions == std::array<std::uint32_t, 2>{0, invalid_index}),
+                      "patch 0 lies between region 0 and the outside");
         CHECK_MESSAGE((s.F == 110 && s.V == 112 && s.E == 220 && s.chi == 2 && s.boundary_loops == 0),
-                      "patch 0 (the outer sphere): expected F 110, V 112, E 220, χ 2, 0 loops; got F " << s.F << ", V " << s.V
-                          << ", E " << s.E << ", χ " << s.chi << ", " << s.boundary_loops << " loops");
+                      "patch 0 (the outer sphere): expected F 110, V 112, E 220, χ 2, 0 loops; got F "
+                          << s.F << ", V " << s.V << ", E " << s.E << ", χ " << s.chi << ", " << s.boundary_loops
+                          << " loops");
         // patch 1: the ring's surface: 8 top + 8 bottom + 12 outer + 4 inner quads, 2 × 16 vertices, 2 × 24 + 16 edges
         const Patch& t = rc.patches[1];
         CHECK_MESSAGE((t.regions == std::array<std::uint32_t, 2>{0, 1}), "patch 1 lies between regions 0 and 1");
         CHECK_MESSAGE((t.F == 32 && t.V == 32 && t.E == 64 && t.chi == 0 && t.boundary_loops == 0),
-                      "patch 1 (the torus): expected F 32, V 32, E 64, χ 0, 0 loops; got F " << t.F << ", V " << t.V << ", E "
-                          << t.E << ", χ " << t.chi << ", " << t.boundary_loops << " loops");
+                      "patch 1 (the torus): expected F 32, V 32, E 64, χ 0, 0 loops; got F "
+                          << t.F << ", V " << t.V << ", E " << t.E << ", χ " << t.chi << ", " << t.boundary_loops
+                          << " loops");
         CHECK(rc.regions[0].patches == std::vector<std::uint32_t>{0, 1});
         CHECK(rc.regions[1].patches == std::vector<std::uint32_t>{1});
         // not a CW complex: 0 − 0 + 2 − 2 = 0, while the box is a ball (χ 1)
@@ -112,7 +119,8 @@ TEST_SUITE("Task 6: regions") {
         // cubes (0,0,0) and (1,1,0) touch along an edge only: still two regions of label 1
         const auto edge = cube_labels(3, [](int i, int j, int k) { return k == 0 && i == j && i < 2 ? 1 : 0; });
         const RegionComplex re = region_complex(m, edge);
-        CHECK_MESSAGE(re.regions.size() == 3, "cubes touching along an edge: expected 3 regions, got " << re.regions.size());
+        CHECK_MESSAGE(re.regions.size() == 3,
+                      "cubes touching along an edge: expected 3 regions, got " << re.regions.size());
         check_against_brute(cl, m, edge, "tet grid 3, cubes (0,0,0) and (1,1,0) labelled 1 (they share an edge)");
         // cubes (0,0,0) and (1,0,0) share a face: one region
         const auto face = cube_labels(3, [](int i, int j, int k) { return k == 0 && j == 0 && i < 2 ? 1 : 0; });
@@ -129,15 +137,18 @@ TEST_SUITE("Task 6: regions") {
         for (std::size_t c = 0; c < 8; ++c) halves[c] = std::int32_t(c % 2);  // x < 1/2: 0, else 1
         const RegionComplex rc = region_complex(m, halves);
         INFO("input: hex grid 2 cut at x = 1/2");
-        REQUIRE_MESSAGE((rc.regions.size() == 2 && rc.patches.size() == 3 && rc.curves.size() == 1 && rc.corners.empty()),
-                        "expected 2 regions, 3 patches, 1 curve, 0 corners; got " << counts_text(rc));
+        REQUIRE_MESSAGE(
+            (rc.regions.size() == 2 && rc.patches.size() == 3 && rc.curves.size() == 1 && rc.corners.empty()),
+            "expected 2 regions, 3 patches, 1 curve, 0 corners; got " << counts_text(rc));
         check_all_disks(rc);
         // each half's outer surface: 4 + 4 · 2 quads; the cut: 4 quads; the curve: the cut's square rim, 8 edges
         CHECK(rc.patches[0].F + rc.patches[1].F + rc.patches[2].F == 28);
-        CHECK_MESSAGE(rc.curves[0].edges.size() == 8, "the closed curve has 8 edges, got " << rc.curves[0].edges.size());
+        CHECK_MESSAGE(rc.curves[0].edges.size() == 8,
+                      "the closed curve has 8 edges, got " << rc.curves[0].edges.size());
         CHECK_MESSAGE((rc.curves[0].ends == std::array<std::uint32_t, 2>{invalid_index, invalid_index}),
                       "a closed curve has no ends");
-        CHECK_MESSAGE(rc.curves[0].patches == (std::vector<std::uint32_t>{0, 1, 2}), "all three patches meet along the curve");
+        CHECK_MESSAGE(rc.curves[0].patches == (std::vector<std::uint32_t>{0, 1, 2}),
+                      "all three patches meet along the curve");
         CHECK(complex_chi(rc) == 0);
         check_against_brute(hex.cells, m, halves, "hex grid 2 cut at x = 1/2");
         const Fixture tets{"tet grid 2", fx::tet_grid(2, 0.3)};
@@ -163,14 +174,16 @@ TEST_SUITE("Task 6: regions") {
             INFO("input: " << fix.name << " in octants");
             const Mesh m = stored_mesh(fix);
             const RegionComplex rc = region_complex(m, labels);
-            REQUIRE_MESSAGE((rc.regions.size() == 8 && rc.patches.size() == 20 && rc.curves.size() == 18 && rc.corners.size() == 7),
-                            "expected 8 regions, 20 patches, 18 curves, 7 corners; got " << counts_text(rc));
+            REQUIRE_MESSAGE(
+                (rc.regions.size() == 8 && rc.patches.size() == 20 && rc.curves.size() == 18 && rc.corners.size() == 7),
+                "expected 8 regions, 20 patches, 18 curves, 7 corners; got " << counts_text(rc));
             check_all_disks(rc);
             std::vector<std::size_t> degrees;
             for (const Corner& k : rc.corners) degrees.push_back(k.curves.size());
             std::sort(degrees.begin(), degrees.end());
-            CHECK_MESSAGE(degrees == (std::vector<std::size_t>{5, 5, 5, 5, 5, 5, 6}),
-                          "curves per corner: expected six corners with 5 and the centre with 6, got " << list(degrees));
+            CHECK_MESSAGE(
+                degrees == (std::vector<std::size_t>{5, 5, 5, 5, 5, 5, 6}),
+                "curves per corner: expected six corners with 5 and the centre with 6, got " << list(degrees));
             for (std::size_t i = 0; i < rc.curves.size(); ++i)
                 CHECK_MESSAGE((rc.curves[i].ends[0] != invalid_index && rc.curves[i].ends[1] != invalid_index &&
                                rc.curves[i].ends[0] < rc.curves[i].ends[1]),
@@ -181,7 +194,8 @@ TEST_SUITE("Task 6: regions") {
     }
 
     TEST_CASE("regions: three regions meeting along a curve give 6 disks and 4 curves from corner to corner" *
-              geolab::points(1) * geolab::hint("A curve's ends are the corners at its two ends, the lower index first.")) {
+              geolab::points(1) *
+              geolab::hint("A curve's ends are the corners at its two ends, the lower index first.")) {
         // A = {x < 1/3}, B = {x > 1/3, y < 1/3}, C = the rest of tet grid 3. Curves: the line x = y = 1/3 inside
         // (where A|B, A|C, B|C meet), and the rims of the three interfaces on the surface; all four run from the
         // corner (1/3, 1/3, 0) to the corner (1/3, 1/3, 1). 2 − 4 + 6 − 3 = 1.
@@ -190,16 +204,20 @@ TEST_SUITE("Task 6: regions") {
         const auto labels = cube_labels(3, [](int i, int j, int) { return i == 0 ? 0 : j == 0 ? 1 : 2; });
         INFO("input: tet grid 3 as A = {x < 1/3}, B = {x > 1/3, y < 1/3}, C = the rest");
         const RegionComplex rc = region_complex(m, labels);
-        REQUIRE_MESSAGE((rc.regions.size() == 3 && rc.patches.size() == 6 && rc.curves.size() == 4 && rc.corners.size() == 2),
-                        "expected 3 regions, 6 patches, 4 curves, 2 corners; got " << counts_text(rc));
+        REQUIRE_MESSAGE(
+            (rc.regions.size() == 3 && rc.patches.size() == 6 && rc.curves.size() == 4 && rc.corners.size() == 2),
+            "expected 3 regions, 6 patches, 4 curves, 2 corners; got " << counts_text(rc));
         check_all_disks(rc);
         for (std::size_t i = 0; i < 4; ++i) {
-            CHECK_MESSAGE((rc.curves[i].ends == std::array<std::uint32_t, 2>{0, 1}), "curve " << i << " runs from corner 0 to corner 1");
-            CHECK_MESSAGE(rc.curves[i].patches.size() == 3, "curve " << i << ": 3 patches meet along it, got " << rc.curves[i].patches.size());
+            CHECK_MESSAGE((rc.curves[i].ends == std::array<std::uint32_t, 2>{0, 1}),
+                          "curve " << i << " runs from corner 0 to corner 1");
+            CHECK_MESSAGE(rc.curves[i].patches.size() == 3,
+                          "curve " << i << ": 3 patches meet along it, got " << rc.curves[i].patches.size());
         }
         for (const Corner& k : rc.corners) {
             const glm::dvec3 p = m.position(k.vertex);
-            CHECK_MESSAGE((std::abs(p.x - 1.0 / 3) < 1e-12 && std::abs(p.y - 1.0 / 3) < 1e-12), "corner at " << p.x << " " << p.y << " " << p.z);
+            CHECK_MESSAGE((std::abs(p.x - 1.0 / 3) < 1e-12 && std::abs(p.y - 1.0 / 3) < 1e-12),
+                          "corner at " << p.x << " " << p.y << " " << p.z);
             CHECK(k.curves == (std::vector<std::uint32_t>{0, 1, 2, 3}));
         }
         CHECK(complex_chi(rc) == 1);
@@ -216,7 +234,8 @@ TEST_SUITE("Task 6: regions") {
         const auto touching = cube_labels(3, [](int i, int j, int k) { return i == 1 && j == 1 && k == 0 ? 1 : 0; });
         const RegionComplex rc = region_complex(m, touching);
         CHECK_MESSAGE((rc.regions.size() == 2 && rc.patches.size() == 3 && rc.curves.size() == 1 && rc.corners.empty()),
-                      "tet grid 3, cube (1,1,0) labelled 1: expected 2 regions, 3 patches, 1 curve, 0 corners; got " << counts_text(rc));
+                      "tet grid 3, cube (1,1,0) labelled 1: expected 2 regions, 3 patches, 1 curve, 0 corners; got "
+                          << counts_text(rc));
         check_all_disks(rc);
         check_against_brute(cl, m, touching, "tet grid 3, cube (1,1,0) labelled 1");
         // six pyramids around the cube's centre, each its own region: 6 bases + 12 shared triangles; curves: the 12
@@ -226,8 +245,9 @@ TEST_SUITE("Task 6: regions") {
         const std::vector<std::int32_t> six{10, 11, 12, 13, 14, 15};
         const RegionComplex rp = region_complex(mp, six);
         INFO("input: cube of 6 pyramids, labels 10..15");
-        REQUIRE_MESSAGE((rp.regions.size() == 6 && rp.patches.size() == 18 && rp.curves.size() == 20 && rp.corners.size() == 9),
-                        "expected 6 regions, 18 patches, 20 curves, 9 corners; got " << counts_text(rp));
+        REQUIRE_MESSAGE(
+            (rp.regions.size() == 6 && rp.patches.size() == 18 && rp.curves.size() == 20 && rp.corners.size() == 9),
+            "expected 6 regions, 18 patches, 20 curves, 9 corners; got " << counts_text(rp));
         for (std::size_t r = 0; r < 6; ++r) CHECK(rp.regions[r].label == six[r]);
         CHECK(rp.corners.back().vertex == Vertex{8});
         CHECK(rp.corners.back().curves.size() == 8);
@@ -235,8 +255,9 @@ TEST_SUITE("Task 6: regions") {
     }
 
     TEST_CASE("regions: every stored mesh with one region per cell / with one label for all (against brute force)" *
-              geolab::points(1) * geolab::hint("Prisms, pyramids and general polyhedra: walk each face's half-edges, "
-                                               "whatever their number.")) {
+              geolab::points(1) *
+              geolab::hint("Prisms, pyramids and general polyhedra: walk each face's half-edges, "
+                           "whatever their number.")) {
         for (const Fixture& f : stored_fixtures()) {
             const Mesh m = stored_mesh(f);
             std::vector<std::int32_t> own(f.cells.n_cells()), one(f.cells.n_cells(), 7);
@@ -245,7 +266,8 @@ TEST_SUITE("Task 6: regions") {
             const RegionComplex rc = region_complex(m, one);
             INFO("input: " << f.name << ", one label");
             CHECK_MESSAGE((rc.regions.size() == 1 && rc.patches.size() == 1 && rc.curves.empty() && rc.corners.empty()),
-                          "one label: expected 1 region, 1 patch (the boundary sphere), 0 curves, 0 corners; got " << counts_text(rc));
+                          "one label: expected 1 region, 1 patch (the boundary sphere), 0 curves, 0 corners; got "
+                              << counts_text(rc));
             if (rc.patches.size() == 1) CHECK(rc.patches[0].chi == 2);
         }
     }
@@ -260,8 +282,9 @@ TEST_SUITE("Task 6: regions") {
         const std::vector<std::int32_t> zero(m.n_cells(), 0);
         const RegionComplex rc = region_complex(m, zero);
         INFO("input: tet grid 3 without its centre cube (deleted), one label");
-        REQUIRE_MESSAGE((rc.regions.size() == 1 && rc.patches.size() == 2 && rc.curves.empty()),
-                        "a ball with a cavity: expected 1 region, 2 patches (two spheres), no curve; got " << counts_text(rc));
+        REQUIRE_MESSAGE(
+            (rc.regions.size() == 1 && rc.patches.size() == 2 && rc.curves.empty()),
+            "a ball with a cavity: expected 1 region, 2 patches (two spheres), no curve; got " << counts_text(rc));
         CHECK(rc.regions[0].cells.size() == 156);
         CHECK_MESSAGE((rc.patches[0].chi == 2 && rc.patches[1].chi == 2), "both patches are spheres");
         check_against_brute(cl, m, zero, "tet grid 3 without its centre cube", gone);

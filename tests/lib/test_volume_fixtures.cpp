@@ -24,7 +24,8 @@ using Face = std::vector<std::uint32_t>;
 // The faces of cell c, counter-clockwise seen from outside it (the corner orders of volume_io.hpp).
 std::vector<Face> cell_faces(const VolumeMesh& m, std::size_t c) {
     const auto v = m.cell(c);
-    if (m.types[c] == VolumeCell::tetrahedron) return {{v[0], v[2], v[1]}, {v[0], v[1], v[3]}, {v[1], v[2], v[3]}, {v[2], v[0], v[3]}};
+    if (m.types[c] == VolumeCell::tetrahedron)
+        return {{v[0], v[2], v[1]}, {v[0], v[1], v[3]}, {v[1], v[2], v[3]}, {v[2], v[0], v[3]}};
     REQUIRE(m.types[c] == VolumeCell::hexahedron);
     return {{v[0], v[3], v[2], v[1]}, {v[4], v[5], v[6], v[7]}, {v[0], v[1], v[5], v[4]},
             {v[1], v[2], v[6], v[5]}, {v[2], v[3], v[7], v[6]}, {v[3], v[0], v[4], v[7]}};
@@ -101,8 +102,9 @@ std::vector<Face> check_conforming(const VolumeMesh& m) {
     for (auto& [k, use] : faces_of(m)) {
         REQUIRE_MESSAGE(use.cells.size() <= 2, "a face is used by " << use.cells.size() << " cells");
         if (use.cells.size() == 2)
-            REQUIRE_MESSAGE(opposite(use.cycles[0], use.cycles[1]),
-                            "cells " << use.cells[0] << " and " << use.cells[1] << " list their face in the same direction");
+            REQUIRE_MESSAGE(opposite(use.cycles[0], use.cycles[1]), "cells "
+                                                                        << use.cells[0] << " and " << use.cells[1]
+                                                                        << " list their face in the same direction");
         else
             boundary.push_back(use.cycles[0]);
     }
@@ -159,8 +161,12 @@ TEST_CASE("volume fixtures: tet_grid(n) and hex_grid(n) are conforming, positive
         const std::size_t cube = std::size_t((k * n + j) * n + i);
         const glm::dvec3 lo = glm::dvec3(i, j, k) / double(n), hi = glm::dvec3(i + 1, j + 1, k + 1) / double(n);
         for (std::size_t c = 6 * cube; c < 6 * cube + 6; ++c)
-            for (auto v : t.cell(c)) CHECK((glm::all(glm::greaterThanEqual(t.positions[v], lo)) && glm::all(glm::lessThanEqual(t.positions[v], hi))));
-        for (auto v : h.cell(cube)) CHECK((glm::all(glm::greaterThanEqual(h.positions[v], lo)) && glm::all(glm::lessThanEqual(h.positions[v], hi))));
+            for (auto v : t.cell(c))
+                CHECK((glm::all(glm::greaterThanEqual(t.positions[v], lo)) &&
+                       glm::all(glm::lessThanEqual(t.positions[v], hi))));
+        for (auto v : h.cell(cube))
+            CHECK((glm::all(glm::greaterThanEqual(h.positions[v], lo)) &&
+                   glm::all(glm::lessThanEqual(h.positions[v], hi))));
         const auto bt = check_conforming(t), bh = check_conforming(h);
         CHECK(bt.size() == std::size_t(12 * n * n));
         CHECK(bh.size() == std::size_t(6 * n * n));
@@ -202,12 +208,14 @@ TEST_CASE("volume fixtures: ball_with_torus is a ball (sphere χ 2) with a solid
         CHECK(outer.closed);
         CHECK(outer.chi == 2);
         for (const Face& f : boundary)
-            for (auto v : f) REQUIRE_MESSAGE(std::abs(glm::length(m.positions[v]) - 1.0) < 1e-12, "boundary vertex " << v);
+            for (auto v : f)
+                REQUIRE_MESSAGE(std::abs(glm::length(m.positions[v]) - 1.0) < 1e-12, "boundary vertex " << v);
         // the interface: faces with label 1 on one side and 0 on the other
         std::vector<Face> interface;
         for (auto& [k, use] : faces_of(m)) {
             if (use.cells.size() == 1) CHECK_MESSAGE(m.labels[use.cells[0]] == 0, "the torus touches the sphere");
-            if (use.cells.size() == 2 && m.labels[use.cells[0]] != m.labels[use.cells[1]]) interface.push_back(use.cycles[0]);
+            if (use.cells.size() == 2 && m.labels[use.cells[0]] != m.labels[use.cells[1]])
+                interface.push_back(use.cycles[0]);
         }
         const Surface torus = surface_of(interface);
         CHECK(torus.closed);

@@ -29,10 +29,10 @@ VolumeMesh hex_grid(int n);
 //! c = (2i + 1 − n, 2j + 1 − n, 2k + 1 − n)/n) mapped onto the ball by p ↦ p·‖p‖∞/‖p‖₂ (rays from the centre are
 //! kept, the cube's surface goes onto the unit sphere). Label 1 on the tetrahedra of the cubes whose centre has
 //! 0.3 ≤ max(|c.x|, |c.y|) ≤ 0.6 and |c.z| ≤ 0.3 (decided in integers, so exactly symmetric: a square ring of
-//! cubes, i.e. a solid torus, never touching the sphere), label 0 elsewhere. So the label-0 cells form a ball with a solid torus taken out, the label-1 cells
-//! the solid torus: the boundary of the ball is a sphere (χ 2), the interface between the labels a torus (χ 0).
-//! V (n+1)³, C 6n³, boundary vertices on the unit sphere. 5 ≤ n ≤ 256 (ring cubes: 8 for n = 5, 24 for n = 6
-//! and 8, 128 for n = 10).
+//! cubes, i.e. a solid torus, never touching the sphere), label 0 elsewhere. So the label-0 cells form a ball with a
+//! solid torus taken out, the label-1 cells the solid torus: the boundary of the ball is a sphere (χ 2), the interface
+//! between the labels a torus (χ 0). V (n+1)³, C 6n³, boundary vertices on the unit sphere. 5 ≤ n ≤ 256 (ring cubes: 8
+//! for n = 5, 24 for n = 6 and 8, 128 for n = 10).
 VolumeMesh ball_with_torus(int n = 10);
 
 }  // namespace geolab::volume_fixtures

@@ -79,8 +79,8 @@ void find_patches(const Mesh& mesh, const std::vector<std::uint32_t>& region_of,
     std::vector<std::uint8_t> interface(mesh.n_faces(), 0);
     k.assign(mesh.n_edges(), 0);
     for (Face f : mesh.faces()) {
-        if (mesh.is_deleted(f) || side_region(mesh, region_of, Mesh::halfface(f, 0)) ==
-                                      side_region(mesh, region_of, Mesh::halfface(f, 1)))
+        if (mesh.is_deleted(f) ||
+            side_region(mesh, region_of, Mesh::halfface(f, 0)) == side_region(mesh, region_of, Mesh::halfface(f, 1)))
             continue;
         interface[f.idx] = 1;
         for_each_halfedge(mesh, Mesh::halfface(f, 0), [&](HalfEdge h) { ++k[mesh.edge(h).idx]; });
@@ -121,7 +121,8 @@ void patch_topology(const Mesh& mesh, const std::vector<std::uint32_t>& k, Patch
     std::vector<Edge> boundary;
     for (Face f : p.faces)
         for_each_halfedge(mesh, Mesh::halfface(f, 0), [&](HalfEdge h) {
-            if (vertex_mark[mesh.to_vertex(h).idx] != tag) vertex_mark[mesh.to_vertex(h).idx] = tag, vs.push_back(mesh.to_vertex(h));
+            if (vertex_mark[mesh.to_vertex(h).idx] != tag)
+                vertex_mark[mesh.to_vertex(h).idx] = tag, vs.push_back(mesh.to_vertex(h));
             const Edge e = mesh.edge(h);
             if (edge_mark[e.idx] == tag) return;
             edge_mark[e.idx] = tag;
@@ -193,7 +194,8 @@ void find_curves(const Mesh& mesh, const std::vector<std::uint32_t>& k, const st
     for (Face f : mesh.faces())
         if (patch_of[f.idx] != invalid_index)
             for_each_halfedge(mesh, Mesh::halfface(f, 0), [&](HalfEdge h) {
-                if (curve_edge[mesh.edge(h).idx]) rc.curves[curve_of[mesh.edge(h).idx]].patches.push_back(patch_of[f.idx]);
+                if (curve_edge[mesh.edge(h).idx])
+                    rc.curves[curve_of[mesh.edge(h).idx]].patches.push_back(patch_of[f.idx]);
             });
     for (Curve& c : rc.curves) {
         std::sort(c.patches.begin(), c.patches.end());
@@ -213,7 +215,8 @@ RegionComplex region_complex(const Mesh& mesh, const std::vector<std::int32_t>& 
     find_regions(mesh, labels, rc, region_of);
     find_patches(mesh, region_of, rc, k, patch_of);
     std::vector<std::uint32_t> vertex_mark(mesh.n_vertices(), invalid_index), edge_mark(mesh.n_edges(), invalid_index);
-    for (std::uint32_t i = 0; i < rc.patches.size(); ++i) patch_topology(mesh, k, rc.patches[i], vertex_mark, edge_mark, i);
+    for (std::uint32_t i = 0; i < rc.patches.size(); ++i)
+        patch_topology(mesh, k, rc.patches[i], vertex_mark, edge_mark, i);
     find_curves(mesh, k, patch_of, rc);
     return rc;
     // END SOLUTION

@@ -10,7 +10,8 @@
 using namespace lab02;
 
 namespace {
-void check_against_brute(const CellList& cl, const Mesh& m, const std::vector<std::int32_t>& labels, const std::string& what) {
+void check_against_brute(const CellList& cl, const Mesh& m, const std::vector<std::int32_t>& labels,
+                         const std::string& what) {
     INFO("input: " << what);
     const RegionComplex want = brute_region_complex(cl, labels, m);
     const RegionComplex got = region_complex(m, labels);
@@ -20,18 +21,20 @@ void check_against_brute(const CellList& cl, const Mesh& m, const std::vector<st
 }  // namespace
 
 TEST_SUITE("Task 6: regions") {
-    TEST_CASE("regions (hidden): lib's tetrahedralised ball with a torus region (the paper's example)" * geolab::points(2) *
-              geolab::hidden()) {
+    TEST_CASE("regions (hidden): lib's tetrahedralised ball with a torus region (the paper's example)" *
+              geolab::points(2) * geolab::hidden()) {
         for (int n : {5, 8}) {
             const CellList cl = cells_from(geolab::volume_fixtures::ball_with_torus(n));
             const Mesh m = hidden_build(cl);
             INFO("input: volume_fixtures::ball_with_torus(" << n << "), " << cl.n_cells() << " tets");
             const RegionComplex rc = region_complex(m, cl.labels);
-            REQUIRE_MESSAGE((rc.regions.size() == 2 && rc.patches.size() == 2 && rc.curves.empty() && rc.corners.empty()),
-                            "expected 2 regions, 2 patches, 0 curves, 0 corners; got " << counts_text(rc));
+            REQUIRE_MESSAGE(
+                (rc.regions.size() == 2 && rc.patches.size() == 2 && rc.curves.empty() && rc.corners.empty()),
+                "expected 2 regions, 2 patches, 0 curves, 0 corners; got " << counts_text(rc));
             CHECK(rc.regions[0].label == 0);
             CHECK(rc.regions[1].label == 1);
-            CHECK_MESSAGE((rc.patches[0].chi == 2 && rc.patches[0].boundary_loops == 0 && rc.patches[0].regions[1] == invalid_index),
+            CHECK_MESSAGE((rc.patches[0].chi == 2 && rc.patches[0].boundary_loops == 0 &&
+                           rc.patches[0].regions[1] == invalid_index),
                           "patch 0: the sphere between region 0 and the outside, χ 2; got χ " << rc.patches[0].chi);
             CHECK_MESSAGE((rc.patches[1].chi == 0 && rc.patches[1].boundary_loops == 0 &&
                            rc.patches[1].regions == std::array<std::uint32_t, 2>{0, 1}),
@@ -44,32 +47,38 @@ TEST_SUITE("Task 6: regions") {
             for (std::size_t c = 0; c < cut.size(); ++c)
                 if (cut[c] == 1 && list_centroid(cl, c).x > 0) cut[c] = 2;
             const RegionComplex rcut = region_complex(m, cut);
-            CHECK_MESSAGE((rcut.regions.size() == 3 && rcut.patches.size() == 5 && rcut.curves.size() == 2 && rcut.corners.empty()),
-                          "the torus cut in halves: expected 3 regions, 5 patches, 2 curves, 0 corners; got " << counts_text(rcut));
+            CHECK_MESSAGE((rcut.regions.size() == 3 && rcut.patches.size() == 5 && rcut.curves.size() == 2 &&
+                           rcut.corners.empty()),
+                          "the torus cut in halves: expected 3 regions, 5 patches, 2 curves, 0 corners; got "
+                              << counts_text(rcut));
             check_against_brute(cl, m, cut, "ball_with_torus(" + std::to_string(n) + ") with the torus cut at x = 0");
         }
     }
 
-    TEST_CASE("regions (hidden): tetgen's elephant cut by planes / a slab through it" * geolab::points(1) * geolab::hidden()) {
+    TEST_CASE("regions (hidden): tetgen's elephant cut by planes / a slab through it" * geolab::points(1) *
+              geolab::hidden()) {
         const CellList cl = tet_model("elephant");
         const Mesh m = hidden_build(cl);
         glm::dvec3 lo(1e300), hi(-1e300);
         for (const auto& p : cl.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
         const glm::dvec3 mid = 0.5 * (lo + hi);
-        const auto quadrants = labels_by_centroid(cl, [&](const glm::dvec3& p) { return int(p.x > mid.x) + 2 * int(p.y > mid.y); });
+        const auto quadrants =
+            labels_by_centroid(cl, [&](const glm::dvec3& p) { return int(p.x > mid.x) + 2 * int(p.y > mid.y); });
         check_against_brute(cl, m, quadrants, "elephant (tetgen) in four quadrants");
         const double t = 0.1 * (hi.z - lo.z);
-        const auto slab = labels_by_centroid(cl, [&](const glm::dvec3& p) { return std::abs(p.z - mid.z) < t ? 1 : 0; });
+        const auto slab =
+            labels_by_centroid(cl, [&](const glm::dvec3& p) { return std::abs(p.z - mid.z) < t ? 1 : 0; });
         check_against_brute(cl, m, slab, "elephant (tetgen) with a slab |z - mid| < 0.1 depth");
     }
 
-    TEST_CASE("regions (hidden): random labels on grids and mixed cells / a checkerboard" *
-              geolab::points(1) * geolab::hidden()) {
+    TEST_CASE("regions (hidden): random labels on grids and mixed cells / a checkerboard" * geolab::points(1) *
+              geolab::hidden()) {
         std::uint32_t seed = 12345;
         auto next = [&] { return seed = seed * 1664525u + 1013904223u, seed >> 16; };
-        for (auto& [name, cl] : std::vector<std::pair<std::string, CellList>>{{"tet grid 4", fx::tet_grid(4, 0.3)},
-                                                                              {"hex grid 4", fx::hex_grid(4)},
-                                                                              {"prisms and pyramids", fx::prisms_and_pyramids()}}) {
+        for (auto& [name, cl] :
+             std::vector<std::pair<std::string, CellList>>{{"tet grid 4", fx::tet_grid(4, 0.3)},
+                                                           {"hex grid 4", fx::hex_grid(4)},
+                                                           {"prisms and pyramids", fx::prisms_and_pyramids()}}) {
             const Mesh m = hidden_build(cl);
             for (int round = 0; round < 3; ++round) {
                 std::vector<std::int32_t> labels(cl.n_cells());

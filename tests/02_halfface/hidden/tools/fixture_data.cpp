@@ -1,6 +1,7 @@
 // lab02_fixture_data: writes or checks tests/02_halfface/data, the meshes the REFERENCE build_mesh makes for every
 // fixture of stored_fixtures() (fixtures.hpp) and region_stored_fixtures() (region_fixtures.hpp), which the tests
-// of Tasks 2-6 load instead of calling the student's build_mesh (stored.hpp). Instructor side only: linked with the reference.
+// of Tasks 2-6 load instead of calling the student's build_mesh (stored.hpp). Instructor side only: linked with
+// the reference.
 //   lab02_fixture_data --write DIR | --check DIR
 #include <cctype>
 #include <filesystem>
