@@ -52,6 +52,21 @@ TEST_SUITE("Task 6: regions") {
                           "the torus cut in halves: expected 3 regions, 5 patches, 2 curves, 0 corners; got "
                               << counts_text(rcut));
             check_against_brute(cl, m, cut, "ball_with_torus(" + std::to_string(n) + ") with the torus cut at x = 0");
+            // every label also cut by the planes x = 0, y = 0, z = 0: a true CW complex (handout §8), 16 regions,
+            // 44 disks, 42 curves none closed, 15 corners: 15 − 42 + 44 − 16 = 1
+            std::vector<std::int32_t> octants = cl.labels;
+            for (std::size_t c = 0; c < octants.size(); ++c) {
+                const glm::dvec3 x = list_centroid(cl, c);
+                octants[c] = octants[c] * 8 + int(x.x > 0) + 2 * int(x.y > 0) + 4 * int(x.z > 0);
+            }
+            const RegionComplex cw = region_complex(m, octants);
+            CHECK_MESSAGE(
+                (cw.regions.size() == 16 && cw.patches.size() == 44 && cw.curves.size() == 42 &&
+                 cw.corners.size() == 15),
+                "cut into octants: expected 16 regions, 44 patches, 42 curves, 15 corners; got " << counts_text(cw));
+            for (const Patch& p : cw.patches)
+                CHECK_MESSAGE((p.chi == 1 && p.boundary_loops == 1), "a patch is not a disk");
+            for (const Curve& c : cw.curves) CHECK_MESSAGE(c.ends[0] != invalid_index, "a curve is closed");
         }
     }
 
