@@ -2,6 +2,7 @@
 // from the independent builder of builder.hpp, never from build_mesh.
 #include <cstdint>
 
+#include "brute_regions.hpp"
 #include "builder.hpp"
 #include "geolab/volume_fixtures.hpp"
 #include "helpers.hpp"
