@@ -184,8 +184,8 @@ struct Demo {
         const auto [lo, hi] = bounds();
         return lo[axis] + cut * (hi[axis] - lo[axis]);
     }
-    // Cells behind the plane (their centroid below it along the axis) are kept; all with the cut-away off.
-    bool kept(std::size_t c) const { return !cutaway || centroid(c)[axis] <= plane(); }
+    // Cells behind the plane at `at` (their centroid below it along the axis) are kept; all with the cut-away off.
+    bool kept(std::size_t c, double at) const { return !cutaway || centroid(c)[axis] <= at; }
     double quality(std::size_t c) const {
         if (cells.types[c] != CellType::tetrahedron) return 1.0;
         // the tet's corners from its first face (a c b) and the fourth vertex
@@ -242,7 +242,8 @@ void add_cutaway(const Demo& d, gr::Scene& scene, const std::vector<vec3>& cell_
     soup.positions = d.positions();
     std::vector<vec3> colors;
     std::vector<std::uint8_t> keep(d.cells.n_cells());
-    for (std::size_t c = 0; c < keep.size(); ++c) keep[c] = d.kept(c);
+    const double at = d.plane();
+    for (std::size_t c = 0; c < keep.size(); ++c) keep[c] = d.kept(c, at);
     for (std::size_t c = 0; c < keep.size(); ++c) {
         if (!keep[c]) continue;
         if (!d.mesh) {
