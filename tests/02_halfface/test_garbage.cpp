@@ -37,7 +37,7 @@ std::vector<HalfFace> scan_halffaces(const Mesh& m, Vertex v) {
 
 TEST_SUITE("Task 3: deletion and garbage collection") {
     TEST_CASE("delete_cell: the cell's faces become boundary or go / edges without faces go / the mesh stays valid" *
-              geolab::points(3) *
+              geolab::points(2) *
               geolab::hint("Clear cell(hf) and the twins of the cell's half-faces; delete a face with no cell left on "
                            "either side, an edge with no alive half-edge; move halfedge(e) and halfedge(v).")) {
         for (const char* key : {"tet grid 2", "two tets", "hex grid 2", "prisms and pyramids"}) {
@@ -60,7 +60,7 @@ TEST_SUITE("Task 3: deletion and garbage collection") {
         }
     }
 
-    TEST_CASE("delete_cell: the vertex cache never lists a deleted half-face" * geolab::points(3) *
+    TEST_CASE("delete_cell: the vertex cache never lists a deleted half-face" * geolab::points(2) *
               geolab::hint("After deleting, vertex_halffaces(v) must list exactly the alive half-faces at v: rebuild the "
                            "cache (rebuild_vertex_cache) or remove the entries.")) {
         Mesh m = stored_mesh("tet grid 3");
@@ -75,7 +75,7 @@ TEST_SUITE("Task 3: deletion and garbage collection") {
         }
     }
 
-    TEST_CASE("delete_vertex: removes the vertex / its cells and its edges" * geolab::points(3) *
+    TEST_CASE("delete_vertex: removes the vertex / its cells and its edges" * geolab::points(2) *
               geolab::hint("Delete every cell at v (delete_cell), then mark v and its edges deleted.")) {
         Mesh m = stored_mesh("tet grid 2");
         const CellList cl = fx::tet_grid(2, 0.3);

@@ -3,8 +3,10 @@
 #  - `geolab demo NN --help` reaches the demo's own help, which lists its window keys;
 #  - zooming onto a half-edge of a flat mesh (--halfedge N with --png, and Z in the window) looks at it face-on;
 #  - the demos cap their memory like the grader (same default; a clear message when student code hits the cap);
+#  - lab 02's demo cuts a volume mesh open (--png) and its keys step the radial order and the region complex;
 #  - the window fits a 1024×768 screen, and the S key writes its screenshot under out/ (xvfb-run, when installed).
-# Usage: demo_test.sh BIN_DIR SCRATCH_DIR      (BIN_DIR holds geolab, demo_01_halfedge, demo_09_spherical_dc)
+# Usage: demo_test.sh BIN_DIR SCRATCH_DIR      (BIN_DIR holds geolab, demo_01_halfedge, demo_02_halfface,
+#        demo_09_spherical_dc)
 set -euo pipefail
 bin=$(cd "$1" && pwd); scratch=$2
 rm -rf "$scratch"; mkdir -p "$scratch"; cd "$scratch"
@@ -46,7 +48,7 @@ EOF
 png_size() { python3 -c "import struct,sys; print(*struct.unpack('>II', open(sys.argv[1],'rb').read()[16:24]))" "$1"; }
 
 echo "== geolab demo NN --help is the demo's help, with its window keys"
-for lab in 01 09 03; do
+for lab in 01 02 09 03; do
   "$bin/geolab" demo $lab --help >"help$lab.txt" 2>&1 || { cat "help$lab.txt"; fail "geolab demo $lab --help failed"; }
   grep -q "Window keys" "help$lab.txt" || { cat "help$lab.txt"; fail "geolab demo $lab --help does not list the window keys"; }
   grep -q -- "--png" "help$lab.txt" || fail "geolab demo $lab --help is not the demo's help"
@@ -64,7 +66,7 @@ done
 
 echo "== the memory cap: the grader's default, and a clear message when student code hits it"
 grader_mb=$("$bin/geolab" grade --help | sed -n 's/.*--memory-mb[^0-9]*\([0-9][0-9]*\).*/\1/p')
-for demo in demo_01_halfedge demo_09_spherical_dc demo_03_quadrics; do
+for demo in demo_01_halfedge demo_02_halfface demo_09_spherical_dc demo_03_quadrics; do
   demo_mb=$("$bin/$demo" --help | sed -n 's/.*--memory-mb[^0-9]*\([0-9][0-9]*\).*/\1/p')
   [ -n "$grader_mb" ] && [ "$demo_mb" = "$grader_mb" ] || fail "$demo caps memory at '$demo_mb' MiB, the grader at '$grader_mb'"
 done
@@ -72,6 +74,18 @@ rc=0
 "$bin/demo_09_spherical_dc" sphere --level 10 --view compare --memory-mb 1500 --png big.png >mem.log 2>&1 || rc=$?
 grep -q "memory limit (1500 MiB) exceeded" mem.log || { tail -5 mem.log; fail "no clear message at the memory cap (status $rc)"; }
 [ $rc -eq 1 ] || fail "at the memory cap the demo exited with status $rc (expected 1, a clean error)"
+
+echo "== lab 02: a cut-away of the ball with a torus region, its 2-cells, the cells around an edge"
+"$bin/demo_02_halfface" ball_with_torus:6 --png cut02.png >cut02.log || { cat cut02.log; fail "demo 02 --png failed"; }
+grep -q "cut at z = 0; radius ratio" cut02.log || { cat cut02.log; fail "demo 02: no cut-away with quality"; }
+c=$(coverage cut02.png)
+echo "   ball_with_torus:6 cut at z = 0: ${c}% of the picture covered"
+[ "$c" -ge 15 ] || fail "demo 02's cut-away covers only ${c}% of the picture"
+"$bin/demo_02_halfface" ball_with_torus:6 --view cells2 --png cells02.png >cells02.log
+grep -q "2 regions, 2 patches, 0 curves, 0 corners" cells02.log || { cat cells02.log; fail "demo 02: the paper's complex"; }
+"$bin/demo_02_halfface" ball_with_torus:6 --view radial --png radial02.png >radial02.log
+grep -q "interior edge e[0-9]* (v[0-9]* → v[0-9]*): 6 cells in radial order" radial02.log ||
+  { cat radial02.log; fail "demo 02: the radial view"; }
 
 if ! command -v xvfb-run >/dev/null; then
   echo "SKIPPED the window checks: xvfb-run is not installed (tools/bootstrap.sh installs xvfb)"
@@ -97,4 +111,8 @@ xrun "$bin/demo_03_quadrics" --frames 3 --keys N3=Q= --screenshot win03.png >win
   { cat win03.log; fail "demo 03 in a window failed"; }
 grep -q "imaginary ellipsoid .*c=1.1 " win03.log && grep -q "ε₁ = 1.1," win03.log ||
   { cat win03.log; fail "demo 03: N (next example), 3 (select c), = (+0.1), Q (superquadric), = did not do what the help says"; }
+xrun "$bin/demo_02_halfface" ball_with_torus:6 --frames 3 --keys RNNBDD --screenshot win02.png >win02.log 2>&1 ||
+  { cat win02.log; fail "demo 02 in a window failed"; }
+grep -q "step 3 (orange)" win02.log && grep -q "boundary edge e" win02.log && grep -q "2-cells (one colour each)" win02.log ||
+  { cat win02.log; fail "demo 02: R (radial view), N N (step), B (boundary edges), D D (2-cells) did not do what the help says"; }
 echo "demos: help with keys, face-on half-edge zoom, the grader's memory cap, a window that fits, screenshots in out/"
