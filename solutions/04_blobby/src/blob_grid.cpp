@@ -90,8 +90,10 @@ FieldSample evaluate(const BlobScene& scene, const BlobGrid& grid, const glm::dv
     for (std::uint32_t n = grid.cell_start[c]; n < grid.cell_start[c + 1]; ++n) {
         const Blob& b = scene.blobs[grid.blob_ids[n]];
         const glm::dvec3 d = p - b.center;
-        const double r = glm::length(d);
         ++out.kernel_evaluations;
+        const double r2 = glm::dot(d, d);
+        if (r2 >= b.radius * b.radius) continue;  // beyond the support R: D = D' = 0 (no square root, no call)
+        const double r = std::sqrt(r2);
         out.value -= density(scene.kernel, b, r);
         if (r > 0) out.gradient -= density_derivative(scene.kernel, b, r) / r * d;
     }
