@@ -356,5 +356,12 @@ TEST_SUITE("Task 4: marching cubes") {
         CHECK_NOTHROW(marching_cubes(far, 0.0));
         far.origin.x = std::ldexp(1.0, 30) - 13;
         CHECK_THROWS_AS(marching_cubes(far, 0.0), std::invalid_argument);
+        for (int a = 0; a < 3; ++a) {  // every axis is checked
+            Lattice axis = sphere;
+            axis.origin[a] = -1.5 * std::ldexp(1.0, 30);
+            CHECK_THROWS_AS(marching_cubes(axis, 0.0), std::invalid_argument);
+            axis.origin[a] = std::ldexp(1.0, 30) - 13;
+            CHECK_THROWS_AS(marching_cubes(axis, 0.0), std::invalid_argument);
+        }
     }
 }

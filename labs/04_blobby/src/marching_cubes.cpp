@@ -7,7 +7,9 @@
 #include <utility>
 #include <vector>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <glm/vector_relational.hpp>
 
 #include "geolab/blobby.hpp"
 #include "geolab/mc_tables.hpp"

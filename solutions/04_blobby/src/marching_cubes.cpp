@@ -7,7 +7,9 @@
 #include <utility>
 #include <vector>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <glm/vector_relational.hpp>
 
 #include "geolab/blobby.hpp"
 #include "geolab/mc_tables.hpp"
@@ -37,12 +39,10 @@ void check_lattice(const Lattice& L, double iso) {
     if (!(L.h > 0) || !std::isfinite(L.h)) throw std::invalid_argument("marching_cubes: h must be finite and > 0");
     if (!std::isfinite(iso)) throw std::invalid_argument("marching_cubes: iso is not finite");
     // The tie rule's margin δ·h must outweigh a rounding step of every coordinate: |coordinate| ≤ 2^30 h.
-    const double far = std::ldexp(L.h, 30);
-    for (int a = 0; a < 3; ++a)
-        if (!(std::abs(L.origin[a]) <= far) || !(std::abs(L.origin[a] + L.h * (n[a] - 1)) <= far))
-            throw std::invalid_argument("marching_cubes: the lattice reaches more than 2^30 cells (h = " +
-                                        std::to_string(L.h) + ") from 0 on axis " + std::to_string(a) +
-                                        ": vertices would round onto lattice points");
+    const glm::dvec3 far(std::ldexp(L.h, 30)), last = L.origin + L.h * glm::dvec3(n - 1);
+    if (!glm::all(glm::lessThanEqual(glm::abs(L.origin), far)) || !glm::all(glm::lessThanEqual(glm::abs(last), far)))
+        throw std::invalid_argument("marching_cubes: the lattice reaches more than 2^30 cells (h = " +
+                                    std::to_string(L.h) + ") from 0: vertices would round onto lattice points");
 }
 
 // Marching cubes slab by slab: the cubes between planes z = k and z = k + 1 need only those two planes' samples
@@ -146,11 +146,8 @@ private:
         const int c = mc_edge_corners[e][0];  // the edge's lower corner
         const std::size_t s = std::size_t(i + (c & 1)) + std::size_t(nx_) * (j + ((c >> 1) & 1));
         const Plane& P = (c & 4) ? hi_ : lo_;
-        switch (e / 4) {
-            case 0: return P.x_edge[s];
-            case 1: return P.y_edge[s];
-            default: return rising_[s];
-        }
+        const std::vector<std::uint32_t>& ids = e < 4 ? P.x_edge : e < 8 ? P.y_edge : rising_;  // along x, y, z
+        return ids[s];
     }
 
     // The triangles of the cubes between lo_ and hi_. The corners of a cube's face x = i, as four bits in the

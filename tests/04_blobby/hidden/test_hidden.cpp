@@ -186,6 +186,12 @@ TEST_SUITE("Task 4: marching cubes") {
         bad = L;
         bad.h = 0;
         CHECK_THROWS_AS(marching_cubes(bad, 0.0), std::invalid_argument);
+        bad.origin = glm::dvec3(0.0);  // h = 0 at the origin: every lattice point at 0
+        CHECK_THROWS_AS(marching_cubes(bad, 0.0), std::invalid_argument);
+        bad.h = std::numeric_limits<double>::infinity();
+        CHECK_THROWS_AS(marching_cubes(bad, 0.0), std::invalid_argument);
+        bad.h = std::numeric_limits<double>::quiet_NaN();
+        CHECK_THROWS_AS(marching_cubes(bad, 0.0), std::invalid_argument);
         for (const glm::ivec3 fn : {glm::ivec3(1, 3, 3), glm::ivec3(3, 1, 3), glm::ivec3(3, 3, 1)}) {
             Lattice flat;
             flat.n = fn;
