@@ -17,17 +17,17 @@ bool finite_blob(const Blob& b) {
            std::isfinite(b.center.y) && std::isfinite(b.center.z);
 }
 
-// The error of an invalid blob (out of line: check_blob runs at every kernel evaluation).
-[[noreturn, gnu::cold, gnu::noinline]] void invalid_blob(Kernel kernel, const Blob& b) {
-    if (!finite_blob(b)) throw std::invalid_argument("blob: a parameter is not finite");
-    if (kernel == Kernel::blinn)
-        throw std::invalid_argument("blob: Blinn's falloff a must be > 0 (got " + std::to_string(b.a) + ")");
-    throw std::invalid_argument("blob: the support radius R must be > 0 (got " + std::to_string(b.radius) + ")");
+// Throws the error of an invalid blob (out of line: check_blob runs at every kernel evaluation).
+[[noreturn, gnu::cold, gnu::noinline]] void invalid_blob(const std::string& why) {
+    throw std::invalid_argument("blob: " + why);
 }
 
 void check_blob(Kernel kernel, const Blob& b) {
-    const bool shaped = kernel == Kernel::blinn ? b.a > 0 : b.radius > 0;
-    if (!finite_blob(b) || !shaped) invalid_blob(kernel, b);
+    if (!finite_blob(b)) invalid_blob("a parameter is not finite");
+    if (kernel == Kernel::blinn && !(b.a > 0))
+        invalid_blob("Blinn's falloff a must be > 0 (got " + std::to_string(b.a) + ")");
+    if (kernel != Kernel::blinn && !(b.radius > 0))
+        invalid_blob("the support radius R must be > 0 (got " + std::to_string(b.radius) + ")");
 }
 
 void check_r(double r) {

@@ -73,7 +73,7 @@ private:
     // along x and y that start at each sample (written for crossed edges only, and only those are read).
     struct Plane {
         std::vector<std::uint8_t> inside;  // inside[i + nx j] = f < iso
-        std::vector<Row> rows;             // rows[j]
+        std::vector<Row> rows;             // rows.at(j) (checked: one check a row costs nothing)
         std::vector<std::uint32_t> x_edge, y_edge;
     };
 
@@ -98,7 +98,7 @@ private:
                 P.inside[i + std::size_t(nx_) * j] = in;
                 count += in;
             }
-            P.rows[j] = count == 0 ? all_outside : count == nx_ ? all_inside : mixed;
+            P.rows.at(j) = count == 0 ? all_outside : count == nx_ ? all_inside : mixed;
         }
     }
 
@@ -122,10 +122,10 @@ private:
     void make_plane_vertices(int k, Plane& P) {
         for (int j = 0; j < ny_; ++j) {
             const std::size_t row = std::size_t(nx_) * j;
-            if (P.rows[j] == mixed)
+            if (P.rows.at(j) == mixed)
                 for (int i = 0; i + 1 < nx_; ++i)
                     if (P.inside[row + i] != P.inside[row + i + 1]) P.x_edge[row + i] = add_vertex(i, j, k, 0);
-            if (j + 1 < ny_ && !same_uniform(P.rows[j], P.rows[j + 1]))
+            if (j + 1 < ny_ && !same_uniform(P.rows.at(j), P.rows.at(j + 1)))
                 for (int i = 0; i < nx_; ++i)
                     if (P.inside[row + i] != P.inside[row + nx_ + i]) P.y_edge[row + i] = add_vertex(i, j, k, 1);
         }
@@ -134,7 +134,7 @@ private:
     // Vertices on the crossed edges along z from plane k (lo_) to plane k + 1 (hi_).
     void make_rising_vertices(int k) {
         for (int j = 0; j < ny_; ++j) {
-            if (same_uniform(lo_.rows[j], hi_.rows[j])) continue;
+            if (same_uniform(lo_.rows.at(j), hi_.rows.at(j))) continue;
             const std::size_t row = std::size_t(nx_) * j;
             for (int i = 0; i < nx_; ++i)
                 if (lo_.inside[row + i] != hi_.inside[row + i]) rising_[row + i] = add_vertex(i, j, k, 2);
@@ -156,8 +156,8 @@ private:
         std::vector<int>& face = face_;
         face.resize(nx_);
         for (int j = 0; j + 1 < ny_; ++j) {
-            if (same_uniform(lo_.rows[j], lo_.rows[j + 1]) && same_uniform(lo_.rows[j], hi_.rows[j]) &&
-                same_uniform(lo_.rows[j], hi_.rows[j + 1]))
+            if (same_uniform(lo_.rows.at(j), lo_.rows.at(j + 1)) && same_uniform(lo_.rows.at(j), hi_.rows.at(j)) &&
+                same_uniform(lo_.rows.at(j), hi_.rows.at(j + 1)))
                 continue;  // the four rows lie wholly on one side: no cube of this row is crossed
             const std::size_t row = std::size_t(nx_) * j, up = row + nx_;
             for (int i = 0; i < nx_; ++i)
