@@ -278,6 +278,14 @@ TEST_SUITE("Task 3: fast evaluation") {
         BlobScene one;
         one.blobs.resize(1);
         CHECK_THROWS_AS(build_blob_grid(one, 2.0 / 257), std::invalid_argument);
+        // Exactly 2^24 cells is allowed: blobs of R = 1 at x = 0 and x = 2^25 − 2 in cells of 2 give (2^24, 1, 1).
+        BlobScene wide;
+        wide.blobs.resize(2);
+        wide.blobs[1].center.x = 33554430.0;
+        const BlobGrid gw = build_blob_grid(wide, 2.0);
+        CHECK_MESSAGE(gw.dims == glm::ivec3(16777216, 1, 1), "two blobs 2^25 − 2 apart, cells of 2: exactly 2^24 cells "
+                                                             "(allowed), dims (16777216, 1, 1); got (" << gw.dims.x << ", "
+                                                             << gw.dims.y << ", " << gw.dims.z << ")");
         BlobScene bad = s;
         bad.blobs[1].radius = 0;
         CHECK_THROWS_AS(build_blob_grid(bad, 0.0), std::invalid_argument);

@@ -43,20 +43,20 @@ BlobGrid build_blob_grid(const BlobScene& scene, double cell) {
                                     " is too small)");
     g.dims = glm::ivec3(cells);
     const std::size_t n_cells = std::size_t(g.dims.x) * g.dims.y * g.dims.z;
-    auto range = [&](const Blob& b, int a, int& i0, int& i1) {
-        const double R = b.radius;
-        i0 = std::max(0, int(std::ceil((b.center[a] - R - g.origin[a]) / cell - 1.0)));
-        i1 = std::min(g.dims[a] - 1, int(std::floor((b.center[a] + R - g.origin[a]) / cell)));
+    // The cells that blob b's support box [c − R, c + R]³ overlaps (closed boxes): i0 ≤ cell ≤ i1 on each axis.
+    auto range = [&](const Blob& b, glm::ivec3& i0, glm::ivec3& i1) {
+        i0 = glm::max(glm::ivec3(0), glm::ivec3(glm::ceil((b.center - b.radius - g.origin) / cell - 1.0)));
+        i1 = glm::min(g.dims - 1, glm::ivec3(glm::floor((b.center + b.radius - g.origin) / cell)));
     };
     // Two passes (count, then fill): the lists come out in increasing blob order.
     std::vector<std::uint32_t> count(n_cells + 1, 0);
     for (int pass = 0; pass < 2; ++pass) {
         for (std::uint32_t id = 0; id < scene.blobs.size(); ++id) {
-            int r0[3], r1[3];
-            for (int a = 0; a < 3; ++a) range(scene.blobs[id], a, r0[a], r1[a]);
-            for (int k = r0[2]; k <= r1[2]; ++k)
-                for (int j = r0[1]; j <= r1[1]; ++j)
-                    for (int i = r0[0]; i <= r1[0]; ++i) {
+            glm::ivec3 r0, r1;
+            range(scene.blobs[id], r0, r1);
+            for (int k = r0.z; k <= r1.z; ++k)
+                for (int j = r0.y; j <= r1.y; ++j)
+                    for (int i = r0.x; i <= r1.x; ++i) {
                         const std::size_t c = i + std::size_t(g.dims.x) * (j + std::size_t(g.dims.y) * k);
                         if (pass == 0)
                             ++count[c + 1];
