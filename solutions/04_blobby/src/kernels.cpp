@@ -102,11 +102,12 @@ double isolated_radius(Kernel kernel, const Blob& blob, double threshold) {
             if (tau >= 2.0 / 3.0) return R * std::sqrt((1.0 - tau) / 3.0);
             return R * (1.0 - std::sqrt(2.0 * tau / 3.0));
         case Kernel::wyvill: {
-            // C decreases from 1 to 0 on [0, 1]: bisection on s to the last bit.
+            // C decreases from 1 to 0 on [0, 1]: bisection on s, keeping C(lo) > τ ≥ C(hi). Once lo and hi are
+            // adjacent doubles the midpoint rounds to one of them and the step leaves both in place; τ < 1 puts s
+            // above 2^-28, so that happens within 80 halvings: 100 steps reach the last bit for every τ.
             double lo = 0.0, hi = 1.0;
-            for (int it = 0; it < 200 && hi - lo > 0; ++it) {
+            for (int step = 0; step < 100; ++step) {
                 const double mid = 0.5 * (lo + hi);
-                if (mid <= lo || mid >= hi) break;
                 (wyvill_c(mid) > tau ? lo : hi) = mid;
             }
             return R * 0.5 * (lo + hi);
