@@ -58,7 +58,7 @@ double density(Kernel kernel, const Blob& blob, double r) {
             if (r <= R / 3) return b * (1.0 - 3.0 * r * r / (R * R));
             if (r <= R) return 1.5 * b * (1.0 - r / R) * (1.0 - r / R);
             return 0.0;
-        case Kernel::wyvill: return r <= R ? b * wyvill_c(r / R) : 0.0;
+        case Kernel::wyvill: return r < R ? b * wyvill_c(r / R) : 0.0;  // C(1) rounds to −2^-52: D(R) = 0 exactly
     }
     throw std::invalid_argument("density: unknown kernel");
     // END SOLUTION

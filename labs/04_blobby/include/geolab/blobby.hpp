@@ -66,7 +66,8 @@ double density(Kernel kernel, const Blob& blob, double r);
 //! dD/dr at distance r ≥ 0 (0 at r = 0 and beyond the support). Same errors as density.
 double density_derivative(Kernel kernel, const Blob& blob, double r);
 
-//! The distance beyond which D is exactly 0: R for nishimura and wyvill, +infinity for blinn.
+//! The support radius: R for nishimura and wyvill, +infinity for blinn. D(r) and D'(r) are exactly 0 for every
+//! r ≥ R (at r = R too: mind that Wyvill's polynomial evaluated at s = 1 may round to a tiny non-zero value).
 //! \throw std::invalid_argument for an invalid blob (as density).
 double support_radius(Kernel kernel, const Blob& blob);
 
