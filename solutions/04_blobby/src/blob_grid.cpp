@@ -110,26 +110,25 @@ Lattice sample_lattice(const BlobScene& scene, const glm::dvec3& origin, double 
     L.h = h;
     L.n = n;
     const std::size_t N = std::size_t(n.x) * n.y * n.z;
-    L.values.resize(N);
-    L.gradients.resize(N);
+    L.values.reserve(N);  // filled in sample order below (no zero-filling pass over the memory first)
+    L.gradients.reserve(N);
     kernel_evaluations = 0;
     const bool direct = scene.kernel == Kernel::blinn;
     BlobGrid grid;
     if (!direct) grid = build_blob_grid(scene, 0.0);
-    std::size_t s = 0;
     for (int k = 0; k < n.z; ++k)
         for (int j = 0; j < n.y; ++j)
-            for (int i = 0; i < n.x; ++i, ++s) {
+            for (int i = 0; i < n.x; ++i) {  // sample i + n.x (j + n.y k)
                 const glm::dvec3 p = origin + h * glm::dvec3(i, j, k);
                 if (direct) {
                     const FieldValue v = field(scene, p);
-                    L.values[s] = v.value;
-                    L.gradients[s] = v.gradient;
+                    L.values.push_back(v.value);
+                    L.gradients.push_back(v.gradient);
                     kernel_evaluations += scene.blobs.size();
                 } else {
                     const FieldSample v = evaluate(scene, grid, p);
-                    L.values[s] = v.value;
-                    L.gradients[s] = v.gradient;
+                    L.values.push_back(v.value);
+                    L.gradients.push_back(v.gradient);
                     kernel_evaluations += v.kernel_evaluations;
                 }
             }
