@@ -51,9 +51,9 @@ BlobGrid build_blob_grid(const BlobScene& scene, double cell) {
     // Two passes (count, then fill): the lists come out in increasing blob order.
     std::vector<std::uint32_t> count(n_cells + 1, 0);
     for (int pass = 0; pass < 2; ++pass) {
-        for (std::uint32_t id = 0; id < scene.blobs.size(); ++id) {
+        for (std::uint32_t id = 0; const Blob& b : scene.blobs) {
             glm::ivec3 r0, r1;
-            range(scene.blobs[id], r0, r1);
+            range(b, r0, r1);
             for (int k = r0.z; k <= r1.z; ++k)
                 for (int j = r0.y; j <= r1.y; ++j)
                     for (int i = r0.x; i <= r1.x; ++i) {
@@ -63,6 +63,7 @@ BlobGrid build_blob_grid(const BlobScene& scene, double cell) {
                         else
                             g.blob_ids[count[c]++] = id;
                     }
+            ++id;
         }
         if (pass == 0) {
             std::partial_sum(count.begin(), count.end(), count.begin());  // count[c] = start of cell c's list
