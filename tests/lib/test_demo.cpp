@@ -700,12 +700,14 @@ TEST_CASE("DemoSession: sliders moved by the mouse and by scripts, the demo's dr
         CHECK(toy.drags == 0);
         CHECK(toy.keys == 0);
     }
-    SUBCASE("a press on the label captures the mouse but changes nothing") {
-        CHECK(s.mouse({P::press, r.row_lo.x + 3, ty, 640, 480, false}));
-        s.mouse({P::move, r.track_hi.x, ty, 640, 480, false});
-        s.mouse({P::release, r.track_hi.x, ty, 640, 480, false});
+    SUBCASE("a press on the label or the value goes through to the demo's drag (and then the camera)") {
+        CHECK_FALSE(r.grabs(r.row_lo.x + 3, ty));
+        CHECK_FALSE(r.grabs(r.row_hi.x - 3, ty));
+        CHECK(r.grabs(r.track_lo.x - 5, ty));
+        CHECK_FALSE(s.mouse({P::press, r.row_lo.x + 3, ty, 640, 480, false}));
+        CHECK(toy.drags == 1);  // asked, and the point is not there
+        s.mouse({P::release, r.row_lo.x + 3, ty, 640, 480, false});
         CHECK(toy.x == 0.0);
-        CHECK(toy.drags == 0);
     }
     SUBCASE("set_slider: by label or its ASCII spelling, exact values, through the mouse path") {
         s.set_slider("x", 0.625);

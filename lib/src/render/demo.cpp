@@ -591,12 +591,10 @@ bool DemoSession::mouse(const MouseEvent& e) {
         active_ = -1, demo_drag_ = false;
         if (!e.secondary)
             for (std::size_t i = 0; i < sliders_.size(); ++i) {
-                const SliderRect r = slider_rect(sliders_, i);
-                if (!r.contains(e.x, e.y)) continue;
+                if (!slider_rect(sliders_, i).grabs(e.x, e.y)) continue;
                 active_ = int(i);
-                on_track_ = e.x >= r.track_lo.x - 8.0 && e.x <= r.track_hi.x + 8.0;
                 ++overlay_version_;
-                if (on_track_) follow();
+                follow();
                 return true;
             }
         if (!e.secondary && window_.drag && window_.drag(drag_event(P::press, e.x, e.y))) {
@@ -607,7 +605,7 @@ bool DemoSession::mouse(const MouseEvent& e) {
         return false;
     }
     if (active_ >= 0) {
-        if (on_track_) follow();
+        follow();
         if (e.phase == P::release) {
             const bool reframe = sliders_[std::size_t(active_)].reframe;
             active_ = -1;

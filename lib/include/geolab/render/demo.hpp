@@ -219,12 +219,17 @@ Slider slider(std::string label, int& value, int min, int max, bool log = false)
 //! A slider choosing one of `names` (index into them, shown by name), e.g. a kernel.
 Slider choice(std::string label, int& index, std::vector<std::string> names);
 
-//! Where slider i of `sliders` is drawn (pixels, top-left origin): its whole row, which a press selects, and its
-//! track, along which the value runs from track.lo.x (min) to track.hi.x (max). The rows stack from (10, 10),
-//! 26 pixels apart, all as wide as the widest label needs.
+//! Where slider i of `sliders` is drawn (pixels, top-left origin): its row (label, track, value) and its track,
+//! along which the value runs from track_lo.x (min) to track_hi.x (max). The rows stack from (10, 10), 26 pixels
+//! apart, all with the label column the widest label needs.
 struct SliderRect {
     glm::vec2 row_lo, row_hi, track_lo, track_hi;
     bool contains(double x, double y) const { return x >= row_lo.x && x <= row_hi.x && y >= row_lo.y && y <= row_hi.y; }
+    //! True where a press takes the slider: over the track (8 pixels beyond its ends) within the row's height.
+    //! A press on the label or the value goes through to the picture (a control point there, or the camera).
+    bool grabs(double x, double y) const {
+        return x >= track_lo.x - 8.0 && x <= track_hi.x + 8.0 && y >= row_lo.y && y <= row_hi.y;
+    }
 };
 SliderRect slider_rect(const std::vector<Slider>& sliders, std::size_t i);
 //! Adds the sliders to the scene's overlay: a translucent panel, each label, track, knob and value; slider
@@ -445,8 +450,8 @@ public:
     //! Redraws the demo's frame now (e.g. after an animation step changed its state); with `reframe`, the
     //! camera goes to the new frame's.
     void refresh(bool reframe = false);
-    //! A mouse event (the window's on_mouse). A press on a slider's row captures the drag (a press on its track
-    //! sets the value under the cursor, and so does every move); else the demo's drag decides. Moves of a live
+    //! A mouse event (the window's on_mouse). A press on a slider's track (SliderRect::grabs) captures the drag
+    //! and sets the value under the cursor, and so does every move; elsewhere the demo's drag decides. Moves of a live
     //! slider or of the demo's drag mark the frame for a redraw at the next flush(); the release redraws.
     //! \return at a press: true when captured (the window then does not orbit).
     bool mouse(const MouseEvent& e);
@@ -473,7 +478,6 @@ private:
     Frame frame_;
     std::vector<Slider> sliders_;
     int active_ = -1;          // the slider being dragged
-    bool on_track_ = false;    // its press was on the track (moves set the value)
     bool demo_drag_ = false;   // the demo took the drag in progress
     bool pending_ = false, pending_reframe_ = false;
     int frame_version_ = 0, overlay_version_ = 0, camera_version_ = 0;
