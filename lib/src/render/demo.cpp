@@ -350,7 +350,7 @@ const glm::vec4 kPanel{1.0f, 1.0f, 1.0f, 0.78f}, kInk{0.08f, 0.08f, 0.12f, 1.0f}
 float label_column(const std::vector<Slider>& sliders) {
     float w = 0.0f;
     for (const Slider& s : sliders) w = std::max(w, text_size(s.label, kTextScale).x);
-    return w + kPad;
+    return w + 2.0f * kPad;  // (the knob reaches 5 pixels before the track)
 }
 }  // namespace
 
