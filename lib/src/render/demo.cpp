@@ -343,7 +343,7 @@ Slider choice(std::string label, int& index, std::vector<std::string> names) {
 namespace {
 constexpr float kTextScale = 2.0f;                    // overlay text: stb_easy_font doubled (14-pixel capitals)
 constexpr float kPanelX = 10.0f, kPanelY = 10.0f;     // the slider panel's top-left corner
-constexpr float kRowHeight = 26.0f, kTrackWidth = 220.0f, kValueWidth = 110.0f, kPad = 8.0f;
+constexpr float kRowHeight = 26.0f, kTrackWidth = 220.0f, kValueWidth = 150.0f, kPad = 8.0f;
 const glm::vec4 kPanel{1.0f, 1.0f, 1.0f, 0.78f}, kInk{0.08f, 0.08f, 0.12f, 1.0f}, kTrack{0.55f, 0.56f, 0.62f, 1.0f},
     kKnob{0.15f, 0.35f, 0.85f, 1.0f}, kActive{0.90f, 0.35f, 0.05f, 1.0f};
 
@@ -358,7 +358,7 @@ SliderRect slider_rect(const std::vector<Slider>& sliders, std::size_t i) {
     const float y0 = kPanelY + kRowHeight * float(i), label = label_column(sliders);
     SliderRect r;
     r.row_lo = {kPanelX, y0};
-    r.row_hi = {kPanelX + kPad + label + kTrackWidth + kPad + kValueWidth, y0 + kRowHeight};
+    r.row_hi = {kPanelX + kPad + label + kTrackWidth + 2.0f * kPad + kValueWidth, y0 + kRowHeight};
     r.track_lo = {kPanelX + kPad + label, y0 + kRowHeight * 0.5f - 2.0f};
     r.track_hi = {r.track_lo.x + kTrackWidth, y0 + kRowHeight * 0.5f + 2.0f};
     return r;
@@ -379,7 +379,7 @@ void add_sliders(Scene& scene, const std::vector<Slider>& sliders, int active) {
         const double v = s.get ? s.get() : s.min;
         const float x = r.track_lo.x + float(s.fraction(v)) * (r.track_hi.x - r.track_lo.x);
         scene.add_rect({x - 5.0f, mid - 9.0f}, {x + 5.0f, mid + 9.0f}, int(i) == active ? kActive : kKnob);
-        add_text(scene, {r.track_hi.x + kPad, ty}, s.value_text(), kTextScale, ink);
+        add_text(scene, {r.track_hi.x + 2.0f * kPad, ty}, s.value_text(), kTextScale, ink);
     }
 }
 
