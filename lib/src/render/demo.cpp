@@ -11,6 +11,7 @@
 #include <map>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 #include <stb/stb_easy_font.h>
 
@@ -519,6 +520,8 @@ DemoSession::DemoSession(DemoProgram::Window window, int w, int h) : width(w), h
     refresh(true);
 }
 
+Scene DemoSession::take_scene() { return std::exchange(frame_.scene, Scene{}); }
+
 std::string DemoSession::status() const { return frame_.status + (window_.key_hint ? window_.key_hint() : ""); }
 
 std::vector<Scene::Rect> DemoSession::overlay(bool with_status) const {
@@ -851,7 +854,7 @@ int DemoProgram::show(const Window& window) const {
     auto sync = [&] {
         if (session.camera_version() != camera_v) viewer.set_camera(session.camera);
         if (session.frame_version() != frame_v) {
-            viewer.set_scene(session.frame().scene, false);  // (the first scene sets Home's framing)
+            viewer.set_scene(session.take_scene(), false);  // (the first scene sets Home's framing)
             viewer.set_status(session.status());
         }
         if (session.overlay_version() != overlay_v || session.frame_version() != frame_v)
@@ -879,6 +882,12 @@ int DemoProgram::show(const Window& window) const {
     });
     viewer.on_before_draw([&] {
         session.flush();
+        int ww = 0, wh = 0, fbw = 0, fbh = 0;
+        viewer.size(ww, wh, fbw, fbh);
+        if (ww != session.width || wh != session.height) {  // resized: the status line wraps anew
+            session.width = ww, session.height = wh;
+            overlay_v = -1;
+        }
         sync();
     });
     if (window.animate)

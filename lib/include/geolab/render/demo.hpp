@@ -423,6 +423,9 @@ public:
 
     //! The demo's latest frame (its camera: the one the demo asked for).
     const Frame& frame() const { return frame_; }
+    //! Moves the latest frame's scene out (the window uploads it; frame().scene is empty until the next redraw),
+    //! so that a large scene is not held twice.
+    Scene take_scene();
     //! The sliders shown now (Window::sliders at the last redraw).
     const std::vector<Slider>& sliders() const { return sliders_; }
     //! The frame's status with the window's key hint.
