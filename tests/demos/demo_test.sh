@@ -9,7 +9,7 @@
 #    not implemented yet; in a window, a slider moved before S shows in the screenshot.
 # Usage: demo_test.sh BIN_DIR SCRATCH_DIR      (BIN_DIR holds geolab and the demo_NN_name[_stubs] programs)
 set -euo pipefail
-bin=$(cd "$1" && pwd); scratch=$2
+bin=$(cd "$1" && pwd); scratch=$2; here=$(cd "$(dirname "$0")" && pwd)
 rm -rf "$scratch"; mkdir -p "$scratch"; cd "$scratch"
 fail() { echo "FAIL: $*"; exit 1; }
 
@@ -249,5 +249,20 @@ for c in "${window_cases[@]}"; do
   [ "$w" -le 1024 ] && [ "$h" -le 728 ] || fail "demo $lab: the window ($w x $h) does not fit a 1024x768 screen"
   [ "$d" -ge 1 ] || fail "demo $lab: the screenshot after '$script' shows no change"
 done
+# ---- a real mouse (XTest events through GLFW) on demo 03's window: drag slider c, press S mid-drag ----
+# The layout of slider_rect: rows 26 pixels apart from y = 10 (c is the third: y 62..88); demo 03's one-letter
+# labels put the track at x 46..266. A press at x = 150 sets c to about -0.1, the move to x = 100 to about -1.
+if python3 -c "import ctypes; ctypes.CDLL('libXtst.so.6')" 2>/dev/null; then
+  echo "== a real mouse on demo 03's window: a slider dragged, S pressed mid-drag"
+  rm -rf out
+  xrun bash -c "timeout 120 '$bin/demo_03_quadrics' >mouse03.log 2>&1 & demo=\$!
+    python3 '$here/xmouse.py' mouse03.log 'move 150 75; down; move 130 75; move 100 75; key s; up; wait 1; key Escape'
+    wait \$demo" || { cat mouse03.log; fail "demo 03 driven by a real mouse failed"; }
+  grep -q "hyperboloid of one sheet .*c=-" mouse03.log || { cat mouse03.log; fail "dragging slider c with the mouse did not make c negative"; }
+  [ -f out/screenshots/geolab_screenshot_1.png ] || { cat mouse03.log; fail "S during the drag saved no screenshot"; }
+  echo "   $(grep -o 'hyperboloid of one sheet .*c=-[0-9.]*' mouse03.log | tail -1 | sed 's/  (.*|//')"
+else
+  echo "   (no libXtst: the real-mouse check is skipped)"
+fi
 echo "demos: help with keys, face-on half-edge zoom, the grader's memory cap, a window that fits, screenshots in out/"
 echo "demos 01, 03-09: pictures, scripted sliders and drags headless and in windows, all running on the stubs"
