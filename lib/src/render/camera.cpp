@@ -93,7 +93,8 @@ void Camera::orbit(double dx, double dy) {
 
 void Camera::pan(double dx, double dy, int width, int height) {
     // one pixel is this many world units at the target's depth
-    const float unit = 2.0f * distance * std::tan(0.5f * glm::radians(fov_deg)) / float(std::max(1, std::min(width, height)));
+    const float unit =
+        2.0f * distance * std::tan(0.5f * glm::radians(fov_deg)) / float(std::max(1, std::min(width, height)));
     const glm::mat4 v = view();
     const glm::vec3 right(v[0][0], v[1][0], v[2][0]), u(v[0][1], v[1][1], v[2][1]);
     target += unit * (-float(dx) * right + float(dy) * u);

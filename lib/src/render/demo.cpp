@@ -13,10 +13,9 @@
 #include <stdexcept>
 #include <utility>
 
-#include <stb/stb_easy_font.h>
-
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
+#include <stb/stb_easy_font.h>
 
 #include "geolab/models.hpp"
 #include "geolab/render/headless.hpp"
@@ -217,14 +216,15 @@ namespace {
 // The ASCII spelling of one code point (see ascii_text).
 std::string ascii_of(char32_t c) {
     static const std::map<char32_t, const char*> table = {
-        {U'α', "a"}, {U'β', "b"}, {U'γ', "g"}, {U'δ', "d"}, {U'ε', "e"}, {U'ζ', "z"}, {U'η', "eta"}, {U'θ', "th"},
-        {U'κ', "k"}, {U'λ', "l"}, {U'μ', "mu"}, {U'ν', "nu"}, {U'ξ', "xi"}, {U'π', "pi"}, {U'ρ', "r"}, {U'σ', "s"},
-        {U'τ', "t"}, {U'φ', "phi"}, {U'χ', "chi"}, {U'ψ', "psi"}, {U'ω', "w"}, {U'Δ', "D"}, {U'Σ', "S"},
-        {U'Φ', "Phi"}, {U'Ω', "W"}, {U'−', "-"}, {U'–', "-"}, {U'—', "-"}, {U'×', "x"}, {U'·', "*"}, {U'÷', "/"},
-        {U'≤', "<="}, {U'≥', ">="}, {U'≈', "~"}, {U'∪', "U"}, {U'∩', "n"}, {U'°', "deg"}, {U'′', "'"}, {U'…', "..."},
-        {U'→', "->"}, {U'←', "<-"}, {U'∞', "inf"}, {U'±', "+-"}, {U'√', "sqrt"}, {U'²', "^2"}, {U'³', "^3"},
-        {U'¹', "^1"}, {U'ⁿ', "^n"}, {U'é', "e"}, {U'è', "e"}, {U'ë', "e"}, {U'á', "a"}, {U'à', "a"}, {U'ä', "a"},
-        {U'ö', "o"}, {U'ü', "u"}, {U'ç', "c"}, {U'É', "E"}, {U'ñ', "n"}, {U'ß', "ss"}, {U'\u00a0', " "}};
+        {U'α', "a"},  {U'β', "b"},    {U'γ', "g"},   {U'δ', "d"},   {U'ε', "e"},     {U'ζ', "z"},   {U'η', "eta"},
+        {U'θ', "th"}, {U'κ', "k"},    {U'λ', "l"},   {U'μ', "mu"},  {U'ν', "nu"},    {U'ξ', "xi"},  {U'π', "pi"},
+        {U'ρ', "r"},  {U'σ', "s"},    {U'τ', "t"},   {U'φ', "phi"}, {U'χ', "chi"},   {U'ψ', "psi"}, {U'ω', "w"},
+        {U'Δ', "D"},  {U'Σ', "S"},    {U'Φ', "Phi"}, {U'Ω', "W"},   {U'−', "-"},     {U'–', "-"},   {U'—', "-"},
+        {U'×', "x"},  {U'·', "*"},    {U'÷', "/"},   {U'≤', "<="},  {U'≥', ">="},    {U'≈', "~"},   {U'∪', "U"},
+        {U'∩', "n"},  {U'°', "deg"},  {U'′', "'"},   {U'…', "..."}, {U'→', "->"},    {U'←', "<-"},  {U'∞', "inf"},
+        {U'±', "+-"}, {U'√', "sqrt"}, {U'²', "^2"},  {U'³', "^3"},  {U'¹', "^1"},    {U'ⁿ', "^n"},  {U'é', "e"},
+        {U'è', "e"},  {U'ë', "e"},    {U'á', "a"},   {U'à', "a"},   {U'ä', "a"},     {U'ö', "o"},   {U'ü', "u"},
+        {U'ç', "c"},  {U'É', "E"},    {U'ñ', "n"},   {U'ß', "ss"},  {U'\u00a0', " "}};
     if (c >= U'₀' && c <= U'₉') return std::string(1, char('0' + (c - U'₀')));
     if (c >= U'⁴' && c <= U'⁹') return "^" + std::string(1, char('0' + (c - U'⁰')));
     if (c == U'⁰') return "^0";
@@ -267,10 +267,14 @@ std::string ascii_text(const std::string& utf8) {
     std::string out;
     for (std::size_t i = 0; i < utf8.size();) {
         const char32_t c = next_code_point(utf8, i);
-        if (c == U'\n') out += '\n';
-        else if (c < 32 || c == 127) out += ' ';
-        else if (c < 127) out += char(c);
-        else out += ascii_of(c);
+        if (c == U'\n')
+            out += '\n';
+        else if (c < 32 || c == 127)
+            out += ' ';
+        else if (c < 127)
+            out += char(c);
+        else
+            out += ascii_of(c);
     }
     return out;
 }
@@ -342,8 +346,8 @@ Slider choice(std::string label, int& index, std::vector<std::string> names) {
 }
 
 namespace {
-constexpr float kTextScale = 2.0f;                    // overlay text: stb_easy_font doubled (14-pixel capitals)
-constexpr float kPanelX = 10.0f, kPanelY = 10.0f;     // the slider panel's top-left corner
+constexpr float kTextScale = 2.0f;                 // overlay text: stb_easy_font doubled (14-pixel capitals)
+constexpr float kPanelX = 10.0f, kPanelY = 10.0f;  // the slider panel's top-left corner
 constexpr float kRowHeight = 26.0f, kTrackWidth = 220.0f, kValueWidth = 150.0f, kPad = 8.0f;
 const glm::vec4 kPanel{1.0f, 1.0f, 1.0f, 0.78f}, kInk{0.08f, 0.08f, 0.12f, 1.0f}, kTrack{0.55f, 0.56f, 0.62f, 1.0f},
     kKnob{0.15f, 0.35f, 0.85f, 1.0f}, kActive{0.90f, 0.35f, 0.05f, 1.0f};
@@ -392,8 +396,10 @@ void add_status(Scene& scene, const std::string& status, int width, int height) 
     std::istringstream words(ascii_text(status));
     for (std::string w; words >> w;) {
         const std::string longer = lines.back().empty() ? w : lines.back() + " " + w;
-        if (!lines.back().empty() && text_size(longer, kTextScale).x > max_w) lines.push_back(w);
-        else lines.back() = longer;
+        if (!lines.back().empty() && text_size(longer, kTextScale).x > max_w)
+            lines.push_back(w);
+        else
+            lines.back() = longer;
     }
     if (lines.size() > 4) {
         lines.resize(4);
@@ -451,8 +457,10 @@ std::vector<double> parse_point(const std::string& text, const std::string& comm
         }
     }
     if (p.size() != 2 && p.size() != 3)
-        throw std::invalid_argument("--keys: {" + command + "}: a point is x,y (fractions of the window) or x,y,z "
-                                    "(a world point), not '" + text + "'");
+        throw std::invalid_argument("--keys: {" + command +
+                                    "}: a point is x,y (fractions of the window) or x,y,z "
+                                    "(a world point), not '" +
+                                    text + "'");
     return p;
 }
 
@@ -475,7 +483,8 @@ ScriptStep parse_command(const std::string& command) {
     }
     const auto eq = command.find('=');
     if (eq == std::string::npos || eq == 0)
-        throw std::invalid_argument("--keys: {" + command + "}: not a command (expected {LABEL=VALUE}, {drag A B} or "
+        throw std::invalid_argument("--keys: {" + command +
+                                    "}: not a command (expected {LABEL=VALUE}, {drag A B} or "
                                     "{click A})");
     step.kind = ScriptStep::Kind::slider;
     step.label = command.substr(0, eq);
@@ -637,8 +646,9 @@ void DemoSession::set_slider(const std::string& label, double value) {
     if (i == sliders_.size()) {
         std::string names;
         for (const Slider& s : sliders_) names += (names.empty() ? "" : ", ") + ascii_text(s.label);
-        throw std::invalid_argument("no slider '" + label + "' here" +
-                                    (names.empty() ? std::string(" (this view has none)") : " (sliders: " + names + ")"));
+        throw std::invalid_argument(
+            "no slider '" + label + "' here" +
+            (names.empty() ? std::string(" (this view has none)") : " (sliders: " + names + ")"));
     }
     const Slider& s = sliders_[i];
     const SliderRect r = slider_rect(sliders_, i);
@@ -655,8 +665,10 @@ void DemoSession::drag(glm::dvec2 a, glm::dvec2 b, int steps) {
     glm::dvec2 last = a;
     for (int k = 1; k <= std::max(1, steps); ++k) {
         const glm::dvec2 p = a + (b - a) * (double(k) / std::max(1, steps));
-        if (captured) mouse({P::move, p.x, p.y, width, height, false});
-        else camera.orbit(p.x - last.x, p.y - last.y);
+        if (captured)
+            mouse({P::move, p.x, p.y, width, height, false});
+        else
+            camera.orbit(p.x - last.x, p.y - last.y);
         last = p;
     }
     if (captured) {
@@ -679,17 +691,26 @@ glm::dvec2 DemoSession::pixel_of(const std::vector<double>& point) const {
 void DemoSession::run(const ScriptStep& step) {
     using K = ScriptStep::Kind;
     switch (step.kind) {
-        case K::key: key(step.key); break;
-        case K::slider: set_slider(step.label, step.value); break;
-        case K::drag: drag(pixel_of(step.from), pixel_of(step.to)); break;
+        case K::key:
+            key(step.key);
+            break;
+        case K::slider:
+            set_slider(step.label, step.value);
+            break;
+        case K::drag:
+            drag(pixel_of(step.from), pixel_of(step.to));
+            break;
         case K::click: {
             const glm::dvec2 p = pixel_of(step.from);
             flush();
-            if (!mouse({MouseEvent::Phase::press, p.x, p.y, width, height, false})) click(p.x, p.y);
-            else mouse({MouseEvent::Phase::release, p.x, p.y, width, height, false});
+            if (!mouse({MouseEvent::Phase::press, p.x, p.y, width, height, false}))
+                click(p.x, p.y);
+            else
+                mouse({MouseEvent::Phase::release, p.x, p.y, width, height, false});
             break;
         }
-        case K::screenshot: break;  // the caller's (a window or a headless picture)
+        case K::screenshot:
+            break;  // the caller's (a window or a headless picture)
     }
 }
 
@@ -764,9 +785,12 @@ DemoProgram::DemoProgram(std::string program, std::string description, std::stri
       width_(default_width),
       memory_mb_(default_demo_memory_mb()) {
     app_.add_option("--png", png_, "Render the view into this PNG instead of opening a window");
-    app_.add_flag("--widgets", widgets_, "With --png: draw the sliders and the status line into it, as the window does");
+    app_.add_flag("--widgets", widgets_,
+                  "With --png: draw the sliders and the status line into it, as the window does");
     app_.add_option("--figures", figures_, "Render the handout's figures into this folder and exit (headless)");
-    app_.add_option("--size", width_, "PNG width (height = 3/4 of it)")->capture_default_str()->check(CLI::Range(8, 8192));
+    app_.add_option("--size", width_, "PNG width (height = 3/4 of it)")
+        ->capture_default_str()
+        ->check(CLI::Range(8, 8192));
     app_.add_option("--memory-mb", memory_mb_, "Address-space cap for your code, MiB (0: none; default: the grader's)")
         ->capture_default_str();
     app_.add_option("--frames", frames_, "(testing) draw N frames in the window, then exit")->group("");
@@ -900,16 +924,19 @@ int DemoProgram::show(const Window& window) const {
             }
             return changed;
         });
-    return loop(viewer, [&](int key) {
-        enter();
-        session.key(key);
-        sync();
-    }, [&](const ScriptStep& step) {
-        enter();
-        session.run(step);
-        session.flush();
-        sync();
-    });
+    return loop(
+        viewer,
+        [&](int key) {
+            enter();
+            session.key(key);
+            sync();
+        },
+        [&](const ScriptStep& step) {
+            enter();
+            session.run(step);
+            session.flush();
+            sync();
+        });
 }
 
 int DemoProgram::run_window(Viewer& viewer, const std::function<void(int key)>& press) const {

@@ -325,7 +325,8 @@ void Renderer::draw_batch(const Batch& b, const glm::mat4& view, const glm::mat4
             gl_.Uniform1f(uniform(p, "u_width"), b.size * pixel_scale);
             gl_.DrawArrays(GL_LINES, 0, b.count);
             break;
-        case Kind::Overlay: break;  // drawn above
+        case Kind::Overlay:
+            break;  // drawn above
         case Kind::Points:
             gl_.Uniform1f(uniform(p, "u_pull"), kPull);
             gl_.Uniform1f(uniform(p, "u_size"), b.size * pixel_scale);

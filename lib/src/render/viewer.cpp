@@ -101,7 +101,7 @@ struct Viewer::Impl {
     double start_time = 0.0;
     int screenshot_count = 0;
     // mouse state
-    int button = -1;  // GLFW_MOUSE_BUTTON_LEFT / RIGHT while pressed
+    int button = -1;                                      // GLFW_MOUSE_BUTTON_LEFT / RIGHT while pressed
     bool pan = false, dragged = false, captured = false;  // captured: the press went to mouse_cb
     double press_x = 0, press_y = 0, last_x = 0, last_y = 0;
     // an exception thrown by a user callback: it must not unwind through GLFW's C frames, so it is kept here
@@ -400,7 +400,8 @@ void check_figure_dir(const std::filesystem::path& dir) {
     const fs::path target = fs::weakly_canonical(fs::absolute(dir), ec);
     const auto rel = target.lexically_relative(docs);
     if (!ec && !rel.empty() && *rel.begin() != "..")
-        throw std::runtime_error(dir.string() + " is inside docs/, which holds the handouts' figures (the "
+        throw std::runtime_error(dir.string() +
+                                 " is inside docs/, which holds the handouts' figures (the "
                                  "reference's): write yours elsewhere, e.g. --figures out/figures/NN_name");
 }
 

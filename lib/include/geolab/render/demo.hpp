@@ -170,7 +170,6 @@ struct Frame {
     std::string status;
 };
 
-
 // ---- widgets: text, sliders, drags ---------------------------------------------------------------------------------
 
 //! `utf8` with the characters the overlay font lacks spelled in ASCII: Greek letters by their Latin look-alikes or
@@ -190,17 +189,17 @@ void add_text(Scene& scene, glm::vec2 at, const std::string& text, float scale, 
 //! ("{label=value}" in --keys) and tests through the same mouse path. The value lives in the demo: get reads it,
 //! set writes it (the window then redraws the demo's frame).
 struct Slider {
-    std::string label;         //!< shown left of the track (ASCII spelling, see ascii_text); names it in scripts
-    double min = 0.0;          //!< the range [min, max]; min < max, and 0 < min on a log scale
+    std::string label;  //!< shown left of the track (ASCII spelling, see ascii_text); names it in scripts
+    double min = 0.0;   //!< the range [min, max]; min < max, and 0 < min on a log scale
     double max = 1.0;
-    double step = 0.0;         //!< values are multiples of step (0: any value; 1: integers)
-    bool log = false;          //!< positions along the track are logarithmic in the value (e.g. a resolution)
+    double step = 0.0;  //!< values are multiples of step (0: any value; 1: integers)
+    bool log = false;   //!< positions along the track are logarithmic in the value (e.g. a resolution)
     std::function<double()> get;
     std::function<void(double)> set;
     //! How the value is shown (default: fmt(value, 3)); e.g. a kernel's name for a choice.
     std::function<std::string(double)> format;
-    bool live = true;          //!< redraw the demo while dragging (false: only on release, for slow frames)
-    bool reframe = false;      //!< a change moves the camera to the new frame's (as a key returning true)
+    bool live = true;      //!< redraw the demo while dragging (false: only on release, for slow frames)
+    bool reframe = false;  //!< a change moves the camera to the new frame's (as a key returning true)
 
     //! value clamped to [min, max] and rounded to a multiple of step (staying inside the range).
     double snap(double value) const;
@@ -304,9 +303,9 @@ private:
 struct ScriptStep {
     enum class Kind { key, screenshot, slider, drag, click };
     Kind kind = Kind::key;
-    int key = 0;          //!< key: the key code sent (letters upper case, '_' → Space ' ')
-    std::string label;    //!< slider: the slider's label (or its ascii_text)
-    double value = 0.0;   //!< slider: the value to drag it to
+    int key = 0;         //!< key: the key code sent (letters upper case, '_' → Space ' ')
+    std::string label;   //!< slider: the slider's label (or its ascii_text)
+    double value = 0.0;  //!< slider: the value to drag it to
     //! drag: from, to; click: at. Each point is 2 numbers, a place in the window as fractions of its width and
     //! height ((0, 0) the top-left corner), or 3, a world point seen through the current camera.
     std::vector<double> from, to;
@@ -434,8 +433,8 @@ public:
     //! `status`, the status line along the bottom.
     std::vector<Scene::Rect> overlay(bool status = true) const;
 
-    Camera camera;           //!< the view: the frame's after a change that asks for it, else moved by the mouse
-    int width, height;       //!< the view's size (the window's, in screen units)
+    Camera camera;      //!< the view: the frame's after a change that asks for it, else moved by the mouse
+    int width, height;  //!< the view's size (the window's, in screen units)
     //! Change counters: the frame (a redraw of the demo), the overlay (slider values shown) and the camera
     //! (asked for by the demo, or moved by a scripted drag). The window uploads what changed.
     int frame_version() const { return frame_version_; }
@@ -480,8 +479,8 @@ private:
     DemoProgram::Window window_;
     Frame frame_;
     std::vector<Slider> sliders_;
-    int active_ = -1;          // the slider being dragged
-    bool demo_drag_ = false;   // the demo took the drag in progress
+    int active_ = -1;         // the slider being dragged
+    bool demo_drag_ = false;  // the demo took the drag in progress
     bool pending_ = false, pending_reframe_ = false;
     int frame_version_ = 0, overlay_version_ = 0, camera_version_ = 0;
 };

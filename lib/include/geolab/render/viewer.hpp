@@ -38,7 +38,7 @@ public:
 struct MouseEvent {
     enum class Phase { press, move, release };
     Phase phase = Phase::press;
-    double x = 0.0, y = 0.0;  //!< the cursor
+    double x = 0.0, y = 0.0;    //!< the cursor
     int width = 0, height = 0;  //!< the window
     bool secondary = false;     //!< the right button, or the left one with Shift (the pan gesture)
 };
