@@ -523,7 +523,13 @@ TEST_CASE("Slider: snapping to the step and range, linear and logarithmic positi
     CHECK(lin.fraction(3.0) == 1.0);  // clamped
     CHECK(lin.value_at(0.75) == doctest::Approx(1.0));
     CHECK(lin.value_at(-1.0) == -2.0);
-    for (double v : {-1.37, 0.0, 0.5, 1.99}) CHECK(lin.value_at(lin.fraction(v)) == doctest::Approx(v).epsilon(1e-12));
+    for (double v : {-1.37, 0.0, 0.5, 1.99, 0.3, -0.1}) CHECK(lin.value_at(lin.fraction(v)) == v);  // decimal, exactly
+    CHECK(lin.snap(-0.4999) == -0.5);
+    CHECK(lin.snap(1e-9) == 0.0);
+    const Slider fine{.label = "e", .min = 0.05, .max = 5.0, .step = 0.01, .log = true};
+    for (double v : {0.05, 0.3, 1.0, 1.1, 4.99}) CHECK(fine.value_at(fine.fraction(v)) == v);
+    const Slider odd{.label = "o", .min = 0.0, .max = 1.0, .step = 1.0 / 3.0};  // not decimal: plain multiples
+    CHECK(odd.snap(0.7) == doctest::Approx(2.0 / 3.0));
 
     const Slider coarse{.label = "c", .min = 0.0, .max = 1.0, .step = 0.3};
     CHECK(coarse.snap(1.0) == doctest::Approx(0.9));  // 1.2 would leave the range

@@ -1,21 +1,21 @@
 // The shared machinery of the lab demos (see geolab/render/demo.hpp).
 #include "geolab/render/demo.hpp"
 
+#include <stb/stb_easy_font.h>
+
 #include <algorithm>
 #include <array>
 #include <cctype>
 #include <cmath>
 #include <cstring>
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 #include <iostream>
 #include <iterator>
 #include <map>
 #include <sstream>
 #include <stdexcept>
 #include <utility>
-
-#include <glm/geometric.hpp>
-#include <glm/trigonometric.hpp>
-#include <stb/stb_easy_font.h>
 
 #include "geolab/models.hpp"
 #include "geolab/render/headless.hpp"
@@ -297,8 +297,16 @@ double Slider::snap(double value) const {
     if (step > 0) {
         v = min + std::round((v - min) / step) * step;
         if (v > max + 1e-12 * std::abs(max)) v -= step;
+        // a decimal step gives decimal values: -2 + 150 · 0.01 is 0.5 (not 0.49999999999999956), and 0 is 0
+        for (double scale = 1.0; scale <= 1e9; scale *= 10.0) {
+            const double s = step * scale, m = min * scale;
+            if (std::abs(s - std::round(s)) < 1e-9 * s &&
+                std::abs(m - std::round(m)) < 1e-9 * std::max(1.0, std::abs(m))) {
+                v = std::round(v * scale) / scale;
+                break;
+            }
+        }
         v = std::clamp(v, min, max);
-        if (step == std::round(step) && min == std::round(min)) v = std::round(v);  // integers stay exact
     }
     return v;
 }
