@@ -3,13 +3,11 @@
 #  - `geolab demo NN --help` reaches the demo's own help, which lists its window keys;
 #  - zooming onto a half-edge of a flat mesh (--halfedge N with --png, and Z in the window) looks at it face-on;
 #  - the demos cap their memory like the grader (same default; a clear message when student code hits the cap);
-#  - the window fits a 1024×768 screen, and the S key writes its screenshot under out/ (xvfb-run, when installed);
-#  - every demo: --help lists its keys, --png draws something, scripted slider moves and drags (--keys) change the
-#    picture, and the same demo linked against the untouched stubs (demo_NN_name_stubs) runs and says what is
-#    not implemented yet; in a window, a slider moved before S shows in the screenshot.
-# Usage: demo_test.sh BIN_DIR SCRATCH_DIR      (BIN_DIR holds geolab and the demo_NN_name[_stubs] programs)
+#  - the window fits a 1024×768 screen, and the S key writes its screenshot under out/ (xvfb-run, when installed).
+# Usage: demo_test.sh BIN_DIR SCRATCH_DIR      (BIN_DIR holds geolab, demo_01_halfedge, demo_09_spherical_dc)
 set -euo pipefail
-bin=$(cd "$1" && pwd); scratch=$2; here=$(cd "$(dirname "$0")" && pwd)
+bin=$(cd "$1" && pwd); scratch=$2
+here=$(cd "$(dirname "$0")" && pwd)  # tests/demos (xmouse.py)
 rm -rf "$scratch"; mkdir -p "$scratch"; cd "$scratch"
 fail() { echo "FAIL: $*"; exit 1; }
 
@@ -56,27 +54,9 @@ for lab in 01 09 03; do
 done
 grep -q -- "--halfedge" help01.txt || fail "demo 01's help lacks --halfedge"
 
-echo "== --halfedge N --png on a flat mesh: face-on, not an edge-on line"
-for mesh in "grid 40" "grid_holes 100"; do
-  set -- $mesh
-  "$bin/demo_01_halfedge" "$1" --halfedge "$2" --png "he_$1.png" >/dev/null
-  c=$(coverage "he_$1.png")
-  echo "   $1, half-edge $2: ${c}% of the picture covered"
-  [ "$c" -ge 15 ] || fail "zooming onto half-edge $2 of the flat $1 shows only ${c}% of the picture (edge-on?)"
-done
-
-echo "== the memory cap: the grader's default, and a clear message when student code hits it"
-grader_mb=$("$bin/geolab" grade --help | sed -n 's/.*--memory-mb[^0-9]*\([0-9][0-9]*\).*/\1/p')
-for demo in demo_01_halfedge demo_09_spherical_dc demo_03_quadrics; do
-  demo_mb=$("$bin/$demo" --help | sed -n 's/.*--memory-mb[^0-9]*\([0-9][0-9]*\).*/\1/p')
-  [ -n "$grader_mb" ] && [ "$demo_mb" = "$grader_mb" ] || fail "$demo caps memory at '$demo_mb' MiB, the grader at '$grader_mb'"
-done
-rc=0
-"$bin/demo_09_spherical_dc" sphere --level 10 --view compare --memory-mb 1500 --png big.png >mem.log 2>&1 || rc=$?
-grep -q "memory limit (1500 MiB) exceeded" mem.log || { tail -5 mem.log; fail "no clear message at the memory cap (status $rc)"; }
-[ $rc -eq 1 ] || fail "at the memory cap the demo exited with status $rc (expected 1, a clean error)"
-
-# ---- every demo, headless: help, a picture, scripted sliders and drags, the stubs (demos 01, 03-09) ----
+# ---- every demo, headless (demos 01, 03-09): --help lists its keys and sliders, --png draws something, scripted
+# slider moves and drags (--keys) change the status and the picture, and the same demo linked against the untouched
+# stubs (demo_NN_name_stubs) runs and says what is not implemented yet ----
 # The share of pixels (percent, 1 when some but under 1 %) that differ between two PNGs of one size.
 pngdiff() {
   python3 - "$1" "$2" <<'EOF'
@@ -198,30 +178,32 @@ for c in "${stub_cases[@]}"; do
   echo "   demo $lab on the stubs: $(grep -o 'not implemented yet: [^|]*' "stub_$lab.log" | tail -1 | cut -c1-80)"
 done
 
+echo "== --halfedge N --png on a flat mesh: face-on, not an edge-on line"
+for mesh in "grid 40" "grid_holes 100"; do
+  set -- $mesh
+  "$bin/demo_01_halfedge" "$1" --halfedge "$2" --png "he_$1.png" >/dev/null
+  c=$(coverage "he_$1.png")
+  echo "   $1, half-edge $2: ${c}% of the picture covered"
+  [ "$c" -ge 15 ] || fail "zooming onto half-edge $2 of the flat $1 shows only ${c}% of the picture (edge-on?)"
+done
+
+echo "== the memory cap: the grader's default, and a clear message when student code hits it"
+grader_mb=$("$bin/geolab" grade --help | sed -n 's/.*--memory-mb[^0-9]*\([0-9][0-9]*\).*/\1/p')
+for demo in demo_01_halfedge demo_09_spherical_dc demo_03_quadrics; do
+  demo_mb=$("$bin/$demo" --help | sed -n 's/.*--memory-mb[^0-9]*\([0-9][0-9]*\).*/\1/p')
+  [ -n "$grader_mb" ] && [ "$demo_mb" = "$grader_mb" ] || fail "$demo caps memory at '$demo_mb' MiB, the grader at '$grader_mb'"
+done
+rc=0
+"$bin/demo_09_spherical_dc" sphere --level 10 --view compare --memory-mb 1500 --png big.png >mem.log 2>&1 || rc=$?
+grep -q "memory limit (1500 MiB) exceeded" mem.log || { tail -5 mem.log; fail "no clear message at the memory cap (status $rc)"; }
+[ $rc -eq 1 ] || fail "at the memory cap the demo exited with status $rc (expected 1, a clean error)"
+
 if ! command -v xvfb-run >/dev/null; then
   echo "SKIPPED the window checks: xvfb-run is not installed (tools/bootstrap.sh installs xvfb)"
   exit 77
 fi
 echo "== the window on a 1024x768 screen: fits; Z zooms face-on; S writes out/screenshots/"
 xrun() { timeout 180 xvfb-run -a -s "-screen 0 1024x768x24" "$@"; }
-xrun "$bin/demo_01_halfedge" grid --halfedge 40 --frames 3 --keys ZS --screenshot win01.png >win01.log 2>&1 ||
-  { cat win01.log; fail "demo 01 in a window failed"; }
-xrun "$bin/demo_09_spherical_dc" sphere --level 3 --frames 3 --screenshot win09.png >win09.log 2>&1 ||
-  { cat win09.log; fail "demo 09 in a window failed"; }
-for f in win01.png win09.png; do
-  read -r w h < <(png_size "$f")
-  echo "   $f: $w x $h"
-  [ "$w" -le 1024 ] && [ "$h" -le 728 ] || fail "$f: the window ($w x $h) does not fit a 1024x768 screen with its title bar"
-done
-[ -f out/screenshots/geolab_screenshot_1.png ] || { cat win01.log; fail "S wrote no out/screenshots/geolab_screenshot_1.png"; }
-[ -z "$(ls geolab_screenshot_* 2>/dev/null)" ] || fail "a screenshot was written outside out/"
-c=$(coverage win01.png)
-echo "   window, half-edge 40 of the grid after Z: ${c}% covered"
-[ "$c" -ge 15 ] || fail "Z on a half-edge of the flat grid shows only ${c}% of the window (edge-on?)"
-xrun "$bin/demo_03_quadrics" --frames 3 --keys N3=Q= --screenshot win03.png >win03.log 2>&1 ||
-  { cat win03.log; fail "demo 03 in a window failed"; }
-grep -q "imaginary ellipsoid .*c=1.1 " win03.log && grep -q "ε₁ = 1.1," win03.log ||
-  { cat win03.log; fail "demo 03: N (next example), 3 (select c), = (+0.1), Q (superquadric), = did not do what the help says"; }
 # ---- every demo in a window: a slider moved (or a point dragged), then S; the screenshot shows the change ----
 echo "== the windows of demos 03-08: scripted sliders and drags, S screenshots"
 window_cases=(
@@ -249,6 +231,7 @@ for c in "${window_cases[@]}"; do
   [ "$w" -le 1024 ] && [ "$h" -le 728 ] || fail "demo $lab: the window ($w x $h) does not fit a 1024x768 screen"
   [ "$d" -ge 1 ] || fail "demo $lab: the screenshot after '$script' shows no change"
 done
+rm -rf out
 # ---- a real mouse (XTest events through GLFW) on demo 03's window: drag slider c, press S mid-drag ----
 # The layout of slider_rect: rows 26 pixels apart from y = 10 (c is the third: y 62..88); demo 03's one-letter
 # labels put the track at x 46..266. A press at x = 150 sets c to about -0.1, the move to x = 100 to about -1.
@@ -261,8 +244,26 @@ if python3 -c "import ctypes; ctypes.CDLL('libXtst.so.6')" 2>/dev/null; then
   grep -q "hyperboloid of one sheet .*c=-" mouse03.log || { cat mouse03.log; fail "dragging slider c with the mouse did not make c negative"; }
   [ -f out/screenshots/geolab_screenshot_1.png ] || { cat mouse03.log; fail "S during the drag saved no screenshot"; }
   echo "   $(grep -o 'hyperboloid of one sheet .*c=-[0-9.]*' mouse03.log | tail -1 | sed 's/  (.*|//')"
+  rm -rf out
 else
   echo "   (no libXtst: the real-mouse check is skipped)"
 fi
+xrun "$bin/demo_01_halfedge" grid --halfedge 40 --frames 3 --keys ZS --screenshot win01.png >win01.log 2>&1 ||
+  { cat win01.log; fail "demo 01 in a window failed"; }
+xrun "$bin/demo_09_spherical_dc" sphere --level 3 --frames 3 --screenshot win09.png >win09.log 2>&1 ||
+  { cat win09.log; fail "demo 09 in a window failed"; }
+for f in win01.png win09.png; do
+  read -r w h < <(png_size "$f")
+  echo "   $f: $w x $h"
+  [ "$w" -le 1024 ] && [ "$h" -le 728 ] || fail "$f: the window ($w x $h) does not fit a 1024x768 screen with its title bar"
+done
+[ -f out/screenshots/geolab_screenshot_1.png ] || { cat win01.log; fail "S wrote no out/screenshots/geolab_screenshot_1.png"; }
+[ -z "$(ls geolab_screenshot_* 2>/dev/null)" ] || fail "a screenshot was written outside out/"
+c=$(coverage win01.png)
+echo "   window, half-edge 40 of the grid after Z: ${c}% covered"
+[ "$c" -ge 15 ] || fail "Z on a half-edge of the flat grid shows only ${c}% of the window (edge-on?)"
+xrun "$bin/demo_03_quadrics" --frames 3 --keys N3=Q= --screenshot win03.png >win03.log 2>&1 ||
+  { cat win03.log; fail "demo 03 in a window failed"; }
+grep -q "imaginary ellipsoid .*c=1.1 " win03.log && grep -q "ε₁ = 1.1," win03.log ||
+  { cat win03.log; fail "demo 03: N (next example), 3 (select c), = (+0.1), Q (superquadric), = did not do what the help says"; }
 echo "demos: help with keys, face-on half-edge zoom, the grader's memory cap, a window that fits, screenshots in out/"
-echo "demos 01, 03-09: pictures, scripted sliders and drags headless and in windows, all running on the stubs"
