@@ -5,7 +5,9 @@
 # and one test program per variant from tests/NN_name/*.cpp and tests/NN_name/hidden/*.cpp:
 #   test_NN_name, test_NN_name_solution   (with a GEOLAB_BOUNDARY list: the performers, which record)
 #   judge_NN_name                         (with a GEOLAB_BOUNDARY list: tests + given code + replay, no student code)
-# plus the lab's demo (labs/NN_name/demo.cpp) linked against GEOLAB_VARIANT_<NN>, the variant the program uses.
+# plus the lab's demo (labs/NN_name/demo.cpp) linked against GEOLAB_VARIANT_<NN>, the variant the program uses,
+# and in the instructor's tree also demo_NN_name_stubs, the same objects linked against the untouched stubs
+# (tests/demos checks that every demo runs on them).
 # geolab_add_boundary(ID API_HEADER INCLUDE_DIR OUT_DIR)
 # The record and replay thunks of the GEOLAB_BOUNDARY list in API_HEADER (a header under INCLUDE_DIR):
 #   OUT_DIR/recorder.o  the performer's (each thunk defines a student function, records, calls geolab_student_LINE)
@@ -148,7 +150,13 @@ function(geolab_add_lab lab)
   set_property(GLOBAL APPEND PROPERTY GEOLAB_VARIANT_LIBS ${variant})
 
   if(EXISTS ${lab_dir}/demo.cpp)
-    add_executable(demo_${lab} ${lab_dir}/demo.cpp)
+    add_library(demo_${nn}_obj OBJECT ${lab_dir}/demo.cpp)
+    target_link_libraries(demo_${nn}_obj PRIVATE lab_${nn} geolab::render CLI11::CLI11)  # (headers only)
+    add_executable(demo_${lab} $<TARGET_OBJECTS:demo_${nn}_obj>)
     target_link_libraries(demo_${lab} PRIVATE ${variant} geolab::render CLI11::CLI11)
+    if(NOT variant STREQUAL "lab_${nn}")
+      add_executable(demo_${lab}_stubs $<TARGET_OBJECTS:demo_${nn}_obj>)
+      target_link_libraries(demo_${lab}_stubs PRIVATE lab_${nn} geolab::render CLI11::CLI11)
+    endif()
   endif()
 endfunction()
