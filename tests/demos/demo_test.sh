@@ -158,6 +158,7 @@ rc=0; "$bin/demo_03_quadrics" --keys "{drag 1,2}" --png x.png >bad.log 2>&1 || r
 echo "== every demo on the untouched stubs: runs, says what is not implemented yet"
 stub_cases=(
   "01_halfedge|grid|"
+  "02_halfface|ball_with_torus:6|"
   "03_quadrics||{a=0.5}Q{e1=0.3}"
   "04_blobby||{T=0.3}{cells=16}"
   "05_bezier||{drag -2,2.5,0 0,4,0}{t=0.7}BH"
