@@ -1,5 +1,6 @@
 // Task 1: build a half-edge mesh from a polygon soup (handout §3).
 #include <algorithm>
+#include <numeric>
 #include <span>
 #include <string>
 #include <vector>
@@ -60,7 +61,7 @@ DirectedEdges bucket_by_start(const PolygonSoup& soup) {
     DirectedEdges d;
     d.start.assign(soup.n_vertices() + 1, 0);
     for (std::uint32_t u : soup.indices) ++d.start[u];
-    for (std::size_t v = 1; v <= soup.n_vertices(); ++v) d.start[v] += d.start[v - 1];
+    std::partial_sum(d.start.begin(), d.start.end(), d.start.begin());
     d.out.reserve(soup.indices.size());
     prefer_huge_pages(d.out);  // 2 MiB pages: fewer page faults (lib memory.hpp)
     d.out.resize(soup.indices.size());
