@@ -33,9 +33,7 @@ struct DirectedEdges {
     std::vector<Out> out;
 
     std::span<Out> leaving(std::uint32_t u) { return {out.data() + start[u], out.data() + start[u + 1]}; }
-    std::span<const Out> leaving(std::uint32_t u) const {
-        return {out.data() + start[u], out.data() + start[u + 1]};
-    }
+    std::span<const Out> leaving(std::uint32_t u) const { return {out.data() + start[u], out.data() + start[u + 1]}; }
     Found find(std::uint32_t u, std::uint32_t v) {
         const auto l = leaving(u);
         if (l.size() <= kScanned) {
@@ -87,7 +85,8 @@ std::vector<std::size_t> faces_using(const PolygonSoup& soup, std::uint32_t u, s
 
 [[noreturn]] void throw_complex_edge(const PolygonSoup& soup, std::uint32_t u, std::uint32_t v) {
     std::string list;
-    for (std::size_t f : faces_using(soup, u, v, true)) list += (list.empty() ? "face " : ", face ") + std::to_string(f);
+    for (std::size_t f : faces_using(soup, u, v, true))
+        list += (list.empty() ? "face " : ", face ") + std::to_string(f);
     throw TopologyError("build_mesh: complex edge between vertex " + std::to_string(std::min(u, v)) + " and vertex " +
                         std::to_string(std::max(u, v)) + ": used by " + list +
                         " (a manifold edge has at most 2 faces)");
