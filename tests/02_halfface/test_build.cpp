@@ -22,6 +22,17 @@ void expect_error(const CellList& cl, const std::string& input, const std::vecto
     }
 }
 
+// build_mesh must throw a TopologyError whose message is exactly `expected` (the contract gives these in full).
+void expect_message(const CellList& cl, const std::string& input, const std::string& expected) {
+    INFO("input: " << input);
+    try {
+        (void)build_mesh(cl);
+        FAIL("build_mesh accepted it: expected a TopologyError \"" << expected << "\"");
+    } catch (const geolab::TopologyError& e) {
+        CHECK_MESSAGE(std::string(e.what()) == expected, "expected the message \"" << expected << "\"; got: " << e.what());
+    }
+}
+
 void check_counts(const Mesh& m, const CellList& cl, const std::string& what) {
     const Reference r = reference(cl);
     INFO("input: " << what);
@@ -94,6 +105,13 @@ TEST_SUITE("Task 1: build") {
             require_valid(m, f.name);
             check_counts(m, f.cells, f.name);
         }
+        // a triangle (0 1 3) made of three corners of the quad (0 1 3 2): two different faces
+        CellList hex_and_tet = fx::hex_grid(1);
+        hex_and_tet.positions.push_back({0.7, 0.3, -1});  // 8, below the cube
+        hex_and_tet.add_tet(0, 3, 1, 8);
+        const Mesh m = build_mesh(hex_and_tet);
+        require_valid(m, "a hexahedron and a tetrahedron on three corners of its bottom quad");
+        check_counts(m, hex_and_tet, "a hexahedron and a tetrahedron on three corners of its bottom quad");
     }
 
     TEST_CASE("build: each cell lists its faces in order / numbered by first use / 2f for the first cell" *
@@ -149,12 +167,14 @@ TEST_SUITE("Task 1: build") {
         two_gon.add_polyhedron({{0, 2, 1}, {0, 1}, {1, 2, 3}, {2, 0, 3}, {0, 1, 3}});
         expect_error<geolab::TopologyError>(two_gon, "cell 1 with a 2-vertex face", {"degenerate cell 1"});
         CellList repeated = fx::single_tet();
-        repeated.add_polyhedron({{0, 2, 1}, {0, 1, 1, 3}, {1, 2, 3}, {2, 0, 3}});
-        expect_error<geolab::TopologyError>(repeated, "cell 1 with a face repeating vertex 1", {"degenerate cell 1", "1"});
+        repeated.add_polyhedron({{0, 2, 1}, {0, 1, 2, 1, 3}, {1, 2, 3}, {2, 0, 3}});
+        expect_error<geolab::TopologyError>(repeated, "cell 1 with a face repeating vertex 1",
+                                            {"degenerate cell 1", "face 1 repeats vertex 1"});
         CellList twice;
         twice.positions = fx::single_tet().positions;
         twice.add_polyhedron({{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3}, {1, 3, 0}});
-        expect_error<geolab::TopologyError>(twice, "cell 0 listing face (0 1 3) twice", {"degenerate cell 0"});
+        expect_error<geolab::TopologyError>(twice, "cell 0 listing face (0 1 3) twice",
+                                            {"degenerate cell 0", "faces 1 and 4 are the same polygon (0 1 3)"});
     }
 
     TEST_CASE("build: a cell that is not closed is rejected naming the cell and an edge" * geolab::points(2) *
@@ -163,7 +183,23 @@ TEST_SUITE("Task 1: build") {
                            "...\".")) {
         CellList flipped = fx::two_tets();
         flipped.add_polyhedron({{0, 1, 2}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3}});  // one face flipped
-        expect_error<geolab::TopologyError>(flipped, "cell 2 with a flipped face", {"cell 2 is not closed", "edge from vertex"});
+        expect_error<geolab::TopologyError>(flipped, "cell 2 with a flipped face",
+                                            {"cell 2 is not closed", "the edge from vertex 0 to vertex 1 is used 2 time(s) in "
+                                                                     "that direction and 0 time(s) in the other"});
+        // a hexahedron with its top face listed clockwise (seen from outside)
+        const CellList grid = fx::hex_grid(2);
+        CellList hexes;
+        hexes.positions = grid.positions;
+        for (std::size_t c = 0; c < grid.n_cells(); ++c) {
+            for (std::size_t i = 0; i < grid.n_faces(c); ++i) {
+                std::vector<std::uint32_t> f = to_vec(grid.face(c, i));
+                if (c == 5 && i == 1) std::reverse(f.begin(), f.end());
+                hexes.add_face(f);
+            }
+            hexes.close_cell(CellType::hexahedron);
+        }
+        expect_error<geolab::TopologyError>(hexes, "hex grid 2 with cell 5's top face mis-oriented",
+                                            {"cell 5 is not closed", "the edge from vertex"});
         CellList open;
         open.positions = fx::hex_grid(1).positions;
         open.add_polyhedron({{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {1, 3, 7, 5}, {3, 2, 6, 7}});  // a box without a lid
@@ -176,8 +212,8 @@ TEST_SUITE("Task 1: build") {
         CellList cl = fx::two_tets();
         cl.positions.push_back({0.3, 0.3, 2});  // 5: another apex above
         cl.add_tet(0, 1, 2, 5);
-        expect_error<geolab::TopologyError>(cl, "three tets on face (0 1 2)",
-                                            {"used by 3 or more cells", "cell 0", "cell 1", "cell 2"});
+        expect_message(cl, "three tets on face (0 1 2)",
+                       "build_mesh: face (0 2 1) is used by 3 or more cells: cell 0, cell 1, cell 2");
     }
 
     TEST_CASE("build: two cells listing a shared face the same way are rejected (inconsistent orientation)" *
@@ -188,8 +224,9 @@ TEST_SUITE("Task 1: build") {
         CellList cl = fx::single_tet();
         cl.positions.push_back({0.3, 0.3, 1.5});
         cl.add_polyhedron({{0, 1, 4}, {1, 2, 4}, {2, 0, 4}, {0, 2, 1}});  // an inverted tet on the same base side
-        expect_error<geolab::TopologyError>(cl, "two tets on the same side of face (0 2 1)",
-                                            {"inconsistent orientation", "cell 0", "cell 1"});
+        expect_message(cl, "two tets on the same side of face (0 2 1)",
+                       "build_mesh: inconsistent orientation: cell 0 and cell 1 both list face (0 2 1) in the same "
+                       "direction");
     }
 
     TEST_CASE("build: an index out of range or a non-finite position is std::invalid_argument" * geolab::points(1) *

@@ -101,6 +101,15 @@ TEST_SUITE("Task 2: queries") {
                 });
             }
         }
+        // every cell deleted (through the kernel, as delete_cell's contract says): no edge has a cell, and the
+        // edges have no half-edge left
+        Mesh m = stored_mesh("two tets");
+        for (Cell c : m.cells()) kernel_delete_cell(m, c);
+        for (Edge e : m.edges()) {
+            out.assign(1, Cell{7});
+            edge_cells(m, e, out);
+            CHECK_MESSAGE(out.empty(), "two tets with both cells deleted: " << e << " has no cell, got " << list(out));
+        }
     }
 
     TEST_CASE("queries: edge_cells turns counter-clockwise about a -> b and starts a fan at the boundary" *
