@@ -25,29 +25,32 @@ std::string face_text(std::span<const std::uint32_t> f) {
 
 // The vertex indices in range and the positions finite (std::invalid_argument otherwise).
 void check_indices(const CellList& cl) {
-    for (std::size_t v = 0; v < cl.n_vertices(); ++v) {
-        const glm::dvec3& p = cl.positions[v];
-        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-            throw std::invalid_argument("build_mesh: vertex " + std::to_string(v) + " has a position that is not finite");
-    }
-    if (cl.cell_begin.empty() || cl.face_begin.empty() || cl.cell_begin.back() + 1 != cl.face_begin.size() ||
-        cl.face_begin.back() != cl.face_vertices.size())
+    const auto bad = std::find_if(cl.positions.begin(), cl.positions.end(), [](const glm::dvec3& p) {
+        return !(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z));
+    });
+    if (bad != cl.positions.end())
+        throw std::invalid_argument("build_mesh: vertex " + std::to_string(bad - cl.positions.begin()) +
+                                    " has a position that is not finite");
+    if (cl.cell_begin.empty() || cl.face_begin.empty() || cl.cell_begin.front() != 0 || cl.face_begin.front() != 0 ||
+        cl.cell_begin.back() + 1 != cl.face_begin.size() || cl.face_begin.back() != cl.face_vertices.size())
         throw std::invalid_argument("build_mesh: the cell list's offsets do not match its faces");
-    for (std::size_t c = 0; c < cl.n_cells(); ++c) {
+    for (std::size_t c = 0; c < cl.n_cells(); ++c)  // then every face index below is a face
         if (cl.cell_begin[c] > cl.cell_begin[c + 1])
             throw std::invalid_argument("build_mesh: cell " + std::to_string(c) + " has decreasing offsets");
+    for (std::size_t c = 0; c < cl.n_cells(); ++c)  // then every vertex index below is in face_vertices
         for (std::size_t i = 0; i < cl.n_faces(c); ++i) {
             const std::size_t j = cl.cell_begin[c] + i;
             if (cl.face_begin[j] > cl.face_begin[j + 1])
                 throw std::invalid_argument("build_mesh: cell " + std::to_string(c) + " face " + std::to_string(i) +
                                             " has decreasing offsets");
+        }
+    for (std::size_t c = 0; c < cl.n_cells(); ++c)
+        for (std::size_t i = 0; i < cl.n_faces(c); ++i)
             for (std::uint32_t v : cl.face(c, i))
                 if (v >= cl.n_vertices())
                     throw std::invalid_argument("build_mesh: cell " + std::to_string(c) + " face " + std::to_string(i) +
                                                 ": vertex " + std::to_string(v) + " out of range (" +
                                                 std::to_string(cl.n_vertices()) + " vertices)");
-        }
-    }
 }
 
 // The canonical form of a face cycle: rotated to start at its smallest vertex and read in the direction of its
@@ -80,7 +83,7 @@ void bucket_sort(std::size_t n, std::size_t n_buckets, Bucket bucket, std::vecto
     begin.assign(n_buckets + 1, 0);
     for (std::uint32_t i = 0; i < n; ++i) ++begin[bucket(i) + 1];
     for (std::size_t b = 0; b < n_buckets; ++b) begin[b + 1] += begin[b];
-    std::vector<std::uint32_t> fill(begin.begin(), begin.end() - 1);
+    std::vector<std::uint32_t> fill = begin;  // the next free place in each bucket
     order.resize(n);
     for (std::uint32_t i = 0; i < n; ++i) order[fill[bucket(i)]++] = i;
 }
@@ -127,14 +130,14 @@ void check_cell(const CellList& cl, std::size_t c, CellScratch& s) {
     };
     s.by_key.resize(nf);
     for (std::uint32_t i = 0; i < nf; ++i) s.by_key[i] = i;
-    std::sort(s.by_key.begin(), s.by_key.end(), [&](std::uint32_t a, std::uint32_t b) {
-        const int cmp = compare(key(a), key(b));
-        return cmp != 0 ? cmp < 0 : a < b;
-    });
+    std::sort(s.by_key.begin(), s.by_key.end(),
+              [&](std::uint32_t a, std::uint32_t b) { return compare(key(a), key(b)) < 0; });
     for (std::size_t i = 0; i + 1 < nf; ++i)
-        if (compare(key(s.by_key[i]), key(s.by_key[i + 1])) == 0)
-            throw degenerate("faces " + std::to_string(s.by_key[i]) + " and " + std::to_string(s.by_key[i + 1]) +
-                             " are the same polygon " + face_text(cl.face(c, s.by_key[i])));
+        if (compare(key(s.by_key[i]), key(s.by_key[i + 1])) == 0) {
+            const auto [first, second] = std::minmax(s.by_key[i], s.by_key[i + 1]);
+            throw degenerate("faces " + std::to_string(first) + " and " + std::to_string(second) +
+                             " are the same polygon " + face_text(cl.face(c, first)));
+        }
     // closed: every directed edge once, and its reverse once
     std::sort(s.directed.begin(), s.directed.end());
     for (std::size_t a = 0; a < s.directed.size();) {
