@@ -279,10 +279,10 @@ TEST_SUITE("Task 1: build") {
         expect_error<std::invalid_argument>(inf, "vertex 0 has z = +infinity", {"vertex 0 has a position that is not finite"});
         // offsets that do not fit
         CellList no_cells = fx::two_tets();
-        no_cells.cell_begin.clear();
+        no_cells.cell_begin = std::vector<std::uint32_t>{};  // empty, without even room for one element
         expect_error<std::invalid_argument>(no_cells, "two tets with cell_begin empty", {"offsets do not match its faces"});
         CellList no_faces = fx::two_tets();
-        no_faces.face_begin.clear();
+        no_faces.face_begin = std::vector<std::uint32_t>{};
         expect_error<std::invalid_argument>(no_faces, "two tets with face_begin empty", {"offsets do not match its faces"});
         CellList short_faces = fx::two_tets();
         short_faces.face_begin.pop_back();
@@ -307,6 +307,10 @@ TEST_SUITE("Task 1: build") {
         face_down.face_begin[1] = 7;  // face 1 of cell 0 would end before it starts
         expect_error<std::invalid_argument>(face_down, "two tets with face_begin (0 7 6 ...)",
                                             {"cell 0 face 1 has decreasing offsets"});
+        CellList first_face_down = fx::two_tets();
+        first_face_down.face_begin[4] = 16;  // face 0 of cell 1 would end (15) before it starts
+        expect_error<std::invalid_argument>(first_face_down, "two tets with face_begin (0 3 6 9 16 15 ...)",
+                                            {"cell 1 face 0 has decreasing offsets"});
     }
 
     TEST_CASE("build: tetgen meshes of real models (sphere and bunny00) validate with the right counts" *
