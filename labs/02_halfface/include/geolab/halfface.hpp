@@ -82,6 +82,8 @@ void boundary_halffaces(const Mesh& mesh, std::vector<HalfFace>& out);
 //! turn: start at the lowest-numbered cell. A boundary edge is a fan: start at the cell whose b → a half-edge has
 //! a boundary half-face as its mate, end at the other boundary. Empty when e has no cell.
 //! \pre the cells around e form one fan or one cycle (a manifold edge).
+//! Cost: O(k) for the k cells around e (one turn around the edge; the benchmark circulates all 1.26M edges of
+//! the 1M-tet grid).
 void edge_cells(const Mesh& mesh, Edge e, std::vector<Cell>& out);
 
 //! The cells that have v as a corner, each once, in increasing index order (use vertex_halffaces).
