@@ -143,16 +143,22 @@ struct ConfigFigures {
 };
 std::vector<ConfigFigures> config_figures;
 
+// The memory of configuration T, once for the summary.
+template <class T>
+void record_memory() {
+    for (const ConfigFigures& c : config_figures)
+        if (c.name == config_name<T>()) return;
+    const auto u = grid_in<T>().memory_use();
+    config_figures.push_back({config_name<T>(), {u.vertices, u.edges, u.halfedges, u.faces, u.cells, u.vertex_cache}});
+}
+
 template <class T>
 void convert_config(benchmark::State& state) {
     for (auto _ : state) {
         auto m = convert<T>(grid_mesh());
         benchmark::DoNotOptimize(m.n_edges());
     }
-    for (const ConfigFigures& c : config_figures)
-        if (c.name == config_name<T>()) return;  // once, not per repetition
-    const auto u = grid_in<T>().memory_use();
-    config_figures.push_back({config_name<T>(), {u.vertices, u.edges, u.halfedges, u.faces, u.cells, u.vertex_cache}});
+    record_memory<T>();
 }
 
 template <class T>
@@ -166,6 +172,7 @@ void edge_walk_config(benchmark::State& state) {
         benchmark::DoNotOptimize(sum);
     }
     state.counters["cells_visited"] = double(incidences);
+    record_memory<T>();
 }
 
 template <class T>
@@ -298,7 +305,7 @@ void print_summary(const MedianReporter& rep) {
     goal_line("edge->cells walk, all edges (compact)",
               "edge->cells walk, all edges/" + std::string(config_name<CompactTraits>()), 0.2);
 
-    std::printf("\nBytes per cell by element kind (array capacities; positions: %.1f B/cell more) and sweep times\n",
+    std::printf("\nBytes per cell by element kind (array capacities; positions: %.1f B/cell more) and CPU seconds\n",
                 24.0 * double(m.n_vertices()) / cells);
     std::printf("%-18s %7s %7s %7s %9s %7s %7s %7s | %9s %9s %9s\n", "prev/mate/cache", "total", "vertex", "edge",
                 "half-edge", "face", "cell", "cache", "convert", "edge walk", "vtx sweep");
@@ -307,9 +314,9 @@ void print_summary(const MedianReporter& rep) {
         std::printf("%-18s %7.1f %7.1f %7.1f %9.1f %7.1f %7.1f %7.1f | %9.3f %9.3f %9.3f\n", c.name.c_str(),
                     double(u.total()) / cells, double(u.vertices) / cells, double(u.edges) / cells,
                     double(u.halfedges) / cells, double(u.faces) / cells, double(u.cells) / cells,
-                    double(u.vertex_cache) / cells, get("convert from full/" + c.name).real,
-                    get("edge->cells walk, all edges/" + c.name).real,
-                    get("vertex->half-faces, all vertices/" + c.name).real);
+                    double(u.vertex_cache) / cells, get("convert from full/" + c.name).cpu,
+                    get("edge->cells walk, all edges/" + c.name).cpu,
+                    get("vertex->half-faces, all vertices/" + c.name).cpu);
     }
     const auto u = m.memory_use();
     std::printf("bytes per element (full): vertex %.1f, edge %.1f, half-edge %.1f, face with its 2 half-faces %.1f, "
