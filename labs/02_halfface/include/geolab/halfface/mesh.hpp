@@ -401,8 +401,9 @@ public:
     void set_cell(HalfFace hf, Cell c) { halfface_cell_[at(hf)] = c; }
     void set_halfedge(Edge e, HalfEdge h) { edge_halfedge_[at(e)] = h; }
     void set_halfedge(Vertex v, HalfEdge h) { vertex_halfedge_[at(v)] = h; }
-    //! Recomputes the vertex → half-face cache from the half-edges (not deleted ones). O(#half-edges). Does
-    //! nothing without VertexCache.
+    //! Recomputes the vertex → half-face cache from the half-edges (not deleted ones). O(#half-edges + #vertices)
+    //! when half-edges are numbered in the order of their half-faces (as build_mesh and garbage_collection leave
+    //! them); otherwise each vertex's list is sorted too. Does nothing without VertexCache.
     void rebuild_vertex_cache() {
         if constexpr (T::vertex_cache) {
             const std::size_t nv = n_vertices();
