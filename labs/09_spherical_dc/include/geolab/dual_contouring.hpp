@@ -188,11 +188,21 @@ struct OctreeNode {
 };
 static_assert(sizeof(OctreeNode) == 16, "an octree node is 16 bytes: 16-bit cell indices (levels <= 10)");
 
-//! A dual vertex: its position and the QEF it minimises (kept for simplification and for tests).
+//! A dual vertex: its position, the QEF it minimises (kept for simplification and for tests), and which piece of
+//! its leaf's surface it stands for.
+//! Layout (handout §5.1): a leaf's vertices are consecutive, tree.vertices[nd.vertex + k] for k = 0 .. pieces − 1
+//! (OctreeNode::vertex is the first); every one of them holds the same `pieces`. A finest leaf has one vertex per
+//! piece of cell_surface(signs, face_joins(tree, leaf)), in that order; any other leaf has one vertex (pieces = 1)
+//! holding all its sign-changing edges.
 struct DualVertex {
     glm::dvec3 position{0.0};
     Qef qef;
-    GEOLAB_FIELDS(position, qef)
+    //! The sign-changing edges of the leaf this vertex's piece crosses: bit e for cell edge e (numbering of
+    //! cell_edge_corners). The polygon around a minimal edge uses, in a leaf with several vertices, the one whose
+    //! `edges` holds the leaf's cell edge containing it.
+    std::uint16_t edges = 0;
+    std::uint8_t pieces = 1;  //!< how many vertices the leaf has (1 to 4)
+    GEOLAB_FIELDS(position, qef, edges, pieces)
 };
 
 //! A sparse map from lattice points to values of T, stored as dense blocks of B×B×B slots (B = 4; initialised to
@@ -531,6 +541,46 @@ private:
     glm::dvec3 spherical_lattice_point(glm::ivec3 q) const;
     std::vector<double> sin_t_, cos_t_, sin_p_, cos_p_;  // spherical lattice tables, N + 1 entries each
 };
+
+// =====================================================================================================================
+// The surface pieces of a cell (given: the tasks use them; handout §5.1)
+// =====================================================================================================================
+
+//! Cell edge e joins corners cell_edge_corners[e][0] (its lower end) and [1]: edges 0–3 run along x (r), 4–7 along
+//! y (θ), 8–11 along z (φ), e / 4 is the axis (the numbering of lib's mc_tables.hpp). Face 2a + s of a cell is
+//! the one normal to axis a on side s (0: the lower, where corner bit a is 0; 1: the upper).
+inline constexpr int cell_edge_corners[12][2] = {{0, 1}, {2, 3}, {4, 5}, {6, 7}, {0, 2}, {1, 3},
+                                                 {4, 6}, {5, 7}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
+
+//! The connected pieces of the surface inside a cell, as marching cubes draws them from the corner signs: on each
+//! face, a segment joins two crossed edges (the edges whose ends are on different sides); the segments of the six
+//! faces close into loops, and each loop is one piece. A face with four crossed edges (two inside corners on one
+//! diagonal: an ambiguous face) is drawn in one of two ways: the inside corners cut off separately (the default)
+//! or joined across the face (bit f of `joins`; face_joins() decides it so that the pieces make a manifold).
+struct CellSurface {
+    int count = 0;                //!< number of pieces, 0 to 4
+    std::uint16_t edges[4] = {};  //!< piece k: bit e for each crossed cell edge on its loop
+    //! The piece whose loop crosses cell edge e, or −1 when edge e is not crossed.
+    int piece_of(int e) const {
+        for (int k = 0; k < count; ++k)
+            if ((edges[k] >> e) & 1) return k;
+        return -1;
+    }
+};
+
+//! The pieces of a cell with corner signs `signs` (bit c: corner c inside, as OctreeNode::signs), ambiguous faces
+//! drawn as `joins` says (bit f: face f's inside corners joined; ignored on faces that are not ambiguous). Pieces
+//! are ordered by their lowest edge. With joins = 0 they are the polygons of lib's mc_tables.
+CellSurface cell_surface(std::uint8_t signs, std::uint8_t joins = 0);
+
+//! How the ambiguous faces of finest leaf `leaf` are drawn (bit f: join the inside corners of face f). The rule,
+//! which makes the dual mesh a 2-manifold (handout §5.1): the two inside corners p, q of an ambiguous face are
+//! joined exactly when they are connected through inside corners by cell edges in BOTH finest cells that share the
+//! face — in a cell, when the two corners next to p and q on the far face are inside and so is a third corner of
+//! the far face. Computed from the lattice samples alone (tree.value at the far faces' corners, φ wrapping), so
+//! both cells that share a face draw it alike; a face with no cell beyond (the domain's boundary) counts as not
+//! connected there. 0 for leaves coarser than the finest level (they get one vertex; handout §5.1).
+std::uint8_t face_joins(const Octree& tree, const OctreeNode& leaf);
 
 // =====================================================================================================================
 // Task 3 — the Cartesian octree (handout §4)
