@@ -597,11 +597,11 @@ PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles) {
     // and at φ = π join the same 4 vertices; the second takes the other diagonal (the same one would cover the same
     // two triangles twice). Each quad there: its sorted vertices and the diagonal it took.
     std::vector<std::pair<std::array<std::uint32_t, 4>, std::pair<std::uint32_t, std::uint32_t>>> level1_quads;
-    // The polygon w[0 .. m) around the edge from lattice point q0 along axis a (counter-clockwise about the edge's
+    // The polygon w[0 .. m) around the edge from lattice point q0 to q0 + span e_a (counter-clockwise about the edge's
     // outward direction: +a when its lower end is inside). A quad is split along the diagonal whose two triangles
     // both face outward (normal · outward direction > 0) when only one of the two does — the other would fold the
     // mesh —, else along the shorter diagonal.
-    auto emit_polygon = [&](const std::uint32_t* w, int m, glm::ivec3 q0, int a, bool lower_inside) {
+    auto emit_polygon = [&](const std::uint32_t* w, int m, glm::ivec3 q0, int a, std::int32_t span, bool lower_inside) {
         if (m == 3) {
             soup.add_face({w[0], w[1], w[2]});
         } else {
@@ -609,7 +609,7 @@ PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles) {
             const glm::dvec3 d02 = P[w[2]] - P[w[0]], d13 = P[w[3]] - P[w[1]];
             bool first = glm::dot(d02, d02) <= glm::dot(d13, d13);  // the diagonal w[0] w[2]
             glm::ivec3 q1 = q0;
-            q1[a] += 1;
+            q1[a] += span;
             const glm::dvec3 out = (lower_inside ? 1.0 : -1.0) * (tree.lattice_point(q1) - tree.lattice_point(q0));
             auto faces_out = [&](int i, int j, int k) {
                 return glm::dot(glm::cross(P[w[j]] - P[w[i]], P[w[k]] - P[w[i]]), out) > 0.0;
@@ -675,7 +675,7 @@ PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles) {
         if (m < 3) return;
         std::uint32_t w[4];
         for (int k = 0; k < m; ++k) w[k] = soup_vertex(poly[k]);
-        emit_polygon(w, m, tree.corner(nd, c), a, nd.corner_inside(c));
+        emit_polygon(w, m, tree.corner(nd, c), a, tree.cell_span(nd.level), nd.corner_inside(c));
     };
     // Speed (Cartesian): the 8 finest leaves of a node of level L − 1 as one group. Their corner signs are the 27
     // points of the node's 3×3×3 sub-lattice (bit p = i + 3j + 9k, as in simplify). The group emits the quads of the
@@ -720,7 +720,7 @@ PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles) {
                         const int j = lower_inside ? k : 3 - k;
                         w[k] = soup_index(piece_vertex(around[j], g.edge[j]));
                     }
-                    emit_polygon(w, 4, tree.corner(tree.nodes[first], 0) + sub_offset(p), a, lower_inside);
+                    emit_polygon(w, 4, tree.corner(tree.nodes[first], 0) + sub_offset(p), a, 1, lower_inside);
                 } else {
                     const std::uint32_t li = first + std::uint32_t(g.child[0]);
                     if (v[g.child[0]] != invalid_index) general_edge(li, tree.nodes[li], cell_edges[g.edge[0]]);
@@ -764,7 +764,7 @@ PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles) {
                             const int j = lower_inside ? k : 3 - k;
                             w[k] = soup_index(piece_vertex(v[j], e.edge_in[j]));
                         }
-                        emit_polygon(w, 4, tree.corner(nd, c), a, lower_inside);
+                        emit_polygon(w, 4, tree.corner(nd, c), a, 1, lower_inside);
                         continue;
                     }
                 }

@@ -624,13 +624,17 @@ struct VertexParams {
     GEOLAB_FIELDS(tau, crossing_tolerance)
 };
 
-//! Task: give every leaf with a sign change on one of its 12 edges a dual vertex. For each such edge find the
-//! crossing (Cartesian: find_crossing on the segment; spherical: find_crossing_arc along the radial segment or the
-//! θ/φ arc, always from the edge's lower to its upper lattice end so that neighbours compute identical points),
-//! add it to the leaf's Qef, solve with params.tau, and keep the vertex in the cell: if the solution lies
-//! outside the cell, clamp it to the cell (Cartesian: the box; spherical: clamp r, θ and φ — φ measured
-//! relative to the cell, across the seam — to the cell's intervals). Edges that degenerate to a point (φ-edges on
-//! the polar axis, θ/φ-edges at r = 0) have no crossing; a radial edge on the axis is counted once.
+//! Task: give every leaf with a sign change on one of its 12 edges its dual vertices: a finest leaf one per piece of
+//! its surface, cell_surface(signs, face_joins(tree, leaf)), in that order; a coarser leaf one for all its
+//! crossings. Store them as DualVertex's layout says (consecutive from OctreeNode::vertex, each with its piece's
+//! `edges` and the leaf's number of vertices in `pieces`). For each sign-changing edge find the crossing
+//! (Cartesian: find_crossing on the segment; spherical: find_crossing_arc along the radial segment or the θ/φ arc,
+//! always from the edge's lower to its upper lattice end so that neighbours compute identical points) and add it to
+//! the Qef of its piece; solve each with params.tau. The vertex is the minimiser when it lies in the cell; else the
+//! Qef's mass point, clamped into the cell (Cartesian: the box, which always holds the mass point; spherical: clamp
+//! r, θ and φ — φ measured relative to the cell, across the seam — to the cell's intervals). Edges that degenerate
+//! to a point (φ-edges on the polar axis, θ/φ-edges at r = 0) have no crossing; a radial edge on the axis is counted
+//! once (both of its copies in a cell there belong to one piece).
 //! Finest edges are shared by 4 leaves: compute each crossing once (a BlockGrid keyed by the edge's lower end; on a
 //! spherical tree an edge whose lower end canonical() merges — the polar axis, the origin when r_min = 0 — must be
 //! keyed by its upper end, or all the θ-edges leaving a pole would share one crossing).
@@ -639,13 +643,14 @@ struct VertexParams {
 std::size_t place_vertices(Octree& tree, const VertexParams& params);
 
 //! Task (Cartesian octrees only): Ju et al.'s bottom-up simplification. A node whose 8 children are all leaves
-//! becomes a leaf when (1) its corner signs form a single sheet (inside corners edge-connected and outside
+//! becomes a leaf when (0) every child's own corner signs form a single sheet (so each child has at most one piece
+//! and no ambiguous face), (1) its corner signs form a single sheet (inside corners edge-connected and outside
 //! corners edge-connected), (2) the sign at the midpoint of each of its edges agrees with one of that edge's
 //! ends, at each face centre with one of the face's corners, at its centre with one of its corners, (3) the
-//! merged QEF's unclamped solution lies in the cell and √(Q/count) ≤ tolerance (a length). The new leaf gets the
-//! merged QEF's vertex (children's vertices stay in tree.vertices, unreferenced) and its `signs`. Repeats up the
-//! tree. The signs at the 27 points of the parent's 3×3×3 sub-lattice are the children's corner signs (call
-//! place_vertices first).
+//! merged QEF's unclamped solution lies in the cell and √(Q/count) ≤ tolerance (a length). The new leaf gets one
+//! vertex, the merged QEF's (edges: the parent's sign-changing cell edges, pieces 1; children's vertices stay in
+//! tree.vertices, unreferenced) and its `signs`. Repeats up the tree. The signs at the 27 points of the parent's
+//! 3×3×3 sub-lattice are the children's corner signs (call place_vertices first).
 //! \return the number of collapses.
 std::size_t simplify(Octree& tree, double tolerance, double tau);
 
@@ -660,15 +665,21 @@ struct PoleRing {
 };
 
 //! Task: polygons of the dual contour (after place_vertices, which records the leaves' signs and vertices).
-//! For every sign-changing MINIMAL edge (an edge of a leaf that no smaller
-//! leaf subdivides), take the leaves in the four quadrants around it (locate() at the edge midpoint ± half a
-//! finest cell), drop repeats (adaptive trees), and emit a triangle or a quad split into 2 triangles (along the
-//! shorter diagonal), counter-clockwise around the edge's axis when the edge's lower end is inside (reversed
-//! otherwise), so normals point outward. Emit each edge once. Spherical octrees: radial edges on the polar axis are
-//! surrounded by a whole ring of leaves, not four — they are returned in `poles` (when not null) instead;
-//! edges on the inner sphere r = r_min (no cells below) are skipped.
+//! For every sign-changing MINIMAL edge (an edge of a leaf that no smaller leaf subdivides), take the leaves in the
+//! four quadrants around it (locate() at the edge midpoint ± half a finest cell) and from each the vertex of the
+//! piece that crosses the edge: a leaf with one vertex gives it; a leaf with several (a finest leaf, as the edge's
+//! own leaf is then) gives the one whose `edges` holds the edge's number as its own cell edge. Drop repeated
+//! vertices (adaptive trees) and emit a triangle or a quad split into 2 triangles, counter-clockwise around the
+//! edge's axis when the edge's lower end is inside (reversed otherwise), so normals point outward. The split: along
+//! the diagonal whose two triangles both face the edge's outward direction (normal (b − a) × (c − a) · d > 0, d the
+//! edge's chord from its lower to its upper lattice end, negated when the lower end is outside) when only one of
+//! the two diagonals does so, else along the shorter diagonal (ties: the one from the polygon's first vertex); at
+//! level 1 of a spherical tree a quad whose 4 vertices an earlier quad joined takes the diagonal that one did not.
+//! Emit each edge once. Spherical octrees: radial edges on the polar axis are surrounded by a whole ring of leaves,
+//! not four — they are returned in `poles` (when not null) instead, each ring leaf giving the piece that crosses the
+//! axis edge; edges on the inner sphere r = r_min (no cells below) are skipped.
 //! \return a triangle soup whose positions are the referenced dual vertices (unreferenced ones are dropped).
-//! \throw TopologyError if a leaf around a sign-changing edge has no vertex.
+//! \throw TopologyError if a leaf around a sign-changing edge has no vertex, or several of which none crosses it.
 PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles = nullptr);
 
 // =====================================================================================================================
