@@ -27,6 +27,7 @@
 #include "geolab/mesh_field.hpp"
 #include "geolab/models.hpp"
 #include "geolab/soup.hpp"
+#include "geolab/surface_checks.hpp"
 
 namespace lab09 {
 
@@ -176,11 +177,25 @@ inline double max_abs_f(const ScalarField& f, const PolygonSoup& soup) {
     return m;
 }
 
-// Both the lab's given mesh check and the independent edge map must call the soup a closed oriented manifold.
+// Vertices whose faces make more than one fan (lib's check_surface); 0 for a soup it cannot read (bad indices, faces
+// of fewer than 3 vertices: the checks below report those).
+inline std::size_t non_manifold_vertices(const PolygonSoup& soup) {
+    geolab::CheckOptions o;
+    o.self_intersections = false;
+    try {
+        return geolab::check_surface(soup, o).non_manifold_vertices;
+    } catch (const std::invalid_argument&) {
+        return 0;
+    }
+}
+
+// Both the lab's given mesh check and the independent edge map must call the soup a closed oriented manifold, and
+// lib's check_surface must find no vertex whose faces make more than one fan.
 #define LAB09_CHECK_CLOSED_MANIFOLD(soup, label)                                                              \
     do {                                                                                                      \
         const ::lab09::EdgeReport er_ = ::lab09::edge_report(soup);                                           \
         const ::geolab::dc::MeshCheck mc_ = ::geolab::dc::check_mesh(soup);                                   \
+        const std::size_t nmv_ = ::lab09::non_manifold_vertices(soup);                                        \
         const std::string label_ = std::string(label);                                                        \
         INFO(label_ << ": " << ::lab09::describe(er_));                                                       \
         CHECK_MESSAGE(er_.faces > 0, "the mesh has no faces");                                               \
@@ -192,6 +207,7 @@ inline double max_abs_f(const ScalarField& f, const PolygonSoup& soup) {
         CHECK_MESSAGE(er_.non_triangles == 0, "faces that are not triangles: " << er_.non_triangles);         \
         CHECK_MESSAGE(mc_.closed_manifold(), "check_mesh disagrees: boundary " << mc_.boundary_edges          \
                                                  << ", non-manifold " << mc_.non_manifold_edges);             \
+        CHECK_MESSAGE(nmv_ == 0, "vertices whose faces make more than one fan: " << nmv_);                    \
     } while (0)
 
 // ---- spherical coordinates, computed here without the lab's functions ------------------------------------------
@@ -680,9 +696,10 @@ inline Octree given_octree(const ScalarField& f, int level, double padding = 0.0
 }
 
 // What contour (Task 6) needs from place_vertices (Task 4), made here: every leaf's signs (bit c set when corner c
-// is inside, f <= 0) and, in each leaf whose corners are not all on one side, one vertex at the mean of the
-// crossings of its sign-changing edges by linear interpolation of the corner values (inside the cell; no QEF, so
-// no sharp corners). contour must work with any vertex inside its cell.
+// is inside, f <= 0) and, in each leaf whose corners are not all on one side, its vertices as DualVertex's layout
+// says: a finest leaf one per piece of cell_surface(signs, face_joins) (given code), any other leaf one; each at the
+// mean of the crossings of its piece's edges by linear interpolation of the corner values (inside the cell; no QEF,
+// so no sharp corners). contour must work with any vertex inside its cell.
 inline void given_vertices(Octree& t) {
     t.vertices.clear();
     for (std::uint32_t li : t.leaves()) {
@@ -693,19 +710,29 @@ inline void given_vertices(Octree& t) {
         for (int c = 0; c < 8; ++c) v[c] = t.value(t.corner(nd, c)), signs |= int(inside(v[c])) << c;
         nd.signs = std::uint8_t(signs);
         if (signs == 0 || signs == 0xff) continue;
-        glm::dvec3 sum(0.0);
-        int n = 0;
-        for (int a = 0; a < 3; ++a)
-            for (int c = 0; c < 8; ++c) {
-                const int d = c | (1 << a);
-                if (c == d || inside(v[c]) == inside(v[d])) continue;
+        CellSurface pieces;
+        if (nd.level == t.max_level) {
+            pieces = cell_surface(nd.signs, face_joins(t, nd));
+        } else {
+            pieces.count = 1;
+            for (int e = 0; e < 12; ++e)
+                if (inside(v[cell_edge_corners[e][0]]) != inside(v[cell_edge_corners[e][1]]))
+                    pieces.edges[0] |= std::uint16_t(1u << e);
+        }
+        nd.vertex = std::uint32_t(t.vertices.size());
+        for (int k = 0; k < pieces.count; ++k) {
+            glm::dvec3 sum(0.0);
+            int n = 0;
+            for (int e = 0; e < 12; ++e) {
+                if (!((pieces.edges[k] >> e) & 1)) continue;
+                const int c = cell_edge_corners[e][0], d = cell_edge_corners[e][1];
                 const double s = v[c] / (v[c] - v[d]);
                 sum += t.lattice_point(t.corner(nd, c)) + s * (t.lattice_point(t.corner(nd, d)) -
                                                                t.lattice_point(t.corner(nd, c)));
                 ++n;
             }
-        nd.vertex = std::uint32_t(t.vertices.size());
-        t.vertices.push_back(DualVertex{sum / double(n), Qef{}});
+            t.vertices.push_back(DualVertex{sum / double(n), Qef{}, pieces.edges[k], std::uint8_t(pieces.count)});
+        }
     }
 }
 
