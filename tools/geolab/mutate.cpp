@@ -123,7 +123,8 @@ void add_mutate(CLI::App& app, int& status) {
     cmd->add_option("--max", a->max, "Run a random sample of this many mutants (default: all)");
     cmd->add_option("--seed", a->seed, "Seed of the --max sample")->capture_default_str();
     cmd->add_option("--jobs,-j", a->jobs, "Mutants graded at once (default: the number of cores)");
-    cmd->add_option("--only", a->only, "Only the mutants of this solution file (e.g. qef.cpp)");
+    cmd->add_option("--only", a->only, "Only the mutants of this solution file (e.g. qef.cpp), or of one line of it "
+                                       "(qef.cpp:58) or lines (qef.cpp:50-60); several, separated by commas (qef.cpp:58,origin.cpp)");
     cmd->add_option("--log", a->log, "Write one JSON line per mutant here");
     cmd->add_flag("--resume", a->resume, "Skip the mutants already in --log (after an interrupted run)");
     cmd->add_flag("--full", a->full, "Run every test of each mutant (default: stop at its first failing test)");
