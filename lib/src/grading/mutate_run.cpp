@@ -515,7 +515,9 @@ MutateReport run_mutate(const MutateOptions& opt) {
     std::vector<Mutant> todo;
     for (const auto& m : chosen) {
         auto it = logged.find(m.key());
-        if (it == logged.end()) {
+        // --rerun-survivors: a survivor of the logged run is graded again (tests were added since); its new line
+        // in the log replaces the old one on the next --resume
+        if (it == logged.end() || (opt.rerun_survivors && it->second.value("outcome", "") == "survived")) {
             todo.push_back(m);
             continue;
         }

@@ -4,7 +4,8 @@
 # number) survives and is reported as equivalent, the weak
 # test leaves a survivor, an ill-typed mutant is stillborn, an endless loop is timed out, nothing in a comment
 # or a string is mutated, a constexpr table's mutant is killed and one that leaves the table the same is proven
-# equivalent, the schema cache is written, --resume skips logged mutants, --only FILE:LINE selects one line, and
+# equivalent, the schema cache is written, --resume skips logged mutants, --rerun-survivors grades the logged
+# survivors again, --only FILE:LINE selects one line, and
 # SIGTERM leaves solutions/ as it was.
 set -u
 geolab=$1 tree=$2 build=$3
@@ -53,6 +54,14 @@ n=$(wc -l < "$work/log.jsonl")
     fail "--resume failed"
 [ "$(wc -l < "$work/log.jsonl")" = "$n" ] || fail "--resume ran logged mutants again"
 grep -q '"tests_run":0' "$work/resume.json" || fail "--resume ran tests"
+
+# --rerun-survivors: the logged survivors (twice's x + x -> x - x among them) are graded again, nothing else
+survivors=$(grep -c '"outcome":"survived"' "$work/log.jsonl")
+"$geolab" mutate 99 --source "$tree" --build "$build" --log "$work/log.jsonl" --resume --rerun-survivors --json \
+    > "$work/rerun.json" 2>/dev/null || fail "--rerun-survivors failed"
+[ "$(wc -l < "$work/log.jsonl")" = "$((n + survivors))" ] || fail "--rerun-survivors did not grade exactly the $survivors survivors again"
+[ "$(tail -n "$survivors" "$work/log.jsonl" | grep -c '"outcome":"survived"')" = "$survivors" ] || fail "--rerun-survivors: a survivor changed"
+grep -q '"survivors":\[[^]]*"src/tiny.cpp:37:14 | + -> -"' "$work/rerun.json" || fail "--rerun-survivors lost the survivor"
 
 # --only FILE:LINE: the mutants of that line only
 "$geolab" mutate 99 --source "$tree" --build "$build" --only tiny.cpp:11,tiny.cpp:50 --log "$work/only.jsonl" --json > /dev/null 2>&1 ||

@@ -142,6 +142,7 @@ struct MutateOptions {
                                    //!< several separated by commas
     std::filesystem::path log;     //!< JSON lines, one per mutant (empty: none)
     bool resume = false;           //!< skip the mutants already in the log
+    bool rerun_survivors = false;  //!< with resume: grade the log's survivors again (after tests were added)
     bool full = false;             //!< run every test of a mutant (default: stop at the first failure)
     std::string order = "killer";  //!< test order: killer (last killer of the file, then cheap), cheap, listing
     double timeout_factor = 10;    //!< a test is timed out after factor × its baseline time + 2 s (≤ its limit)
