@@ -59,18 +59,28 @@ TEST_CASE("build_octree: refines exactly the cells allowed by the conservative t
                        "the largest |grad f| at the 9^3 points lo + side/8 (i, j, k). Use Octree::split so "
                        "children follow the c = cx + 2cy + 4cz order. Handout §4.2.")) {
     const FieldPtr torus = geolab::torus({0.05, 0.0, -0.1}, 0.6, 0.25);
-    // and a field without a Lipschitz constant: Lf = 2 max |grad f| on the 9^3 lattice of the domain cube
-    const QuadraticBall quadratic({0.1, -0.2, 0.05}, 0.6);
-    for (int k = 0; k < 2; ++k) {
-        const ScalarField& f = k == 0 ? *torus : static_cast<const ScalarField&>(quadratic);
+    // and fields without a Lipschitz constant: Lf = 2 max |grad f| on the 9^3 lattice of the domain cube. |grad f| =
+    // 2 |p - c| is largest at the lattice corner farthest from c: any corner when the domain is centred on c; the
+    // corner (0, 8, 0) or (8, 0, 8) of the lattice with the larger bounds; and below 1 everywhere for a tiny ball
+    const glm::dvec3 c1(0.3, -0.1, 0.2), c2(-0.2, 0.15, 0.1);
+    const QuadraticBall quadratics[] = {
+        QuadraticBall({0.1, -0.2, 0.05}, 0.6),
+        QuadraticBall(c1, 0.5, Box{c1 - glm::dvec3(1.1, 0.5, 0.9), c1 + glm::dvec3(0.5, 1.1, 0.5)}),
+        QuadraticBall(c2, 0.5, Box{c2 - glm::dvec3(0.5, 1.1, 0.5), c2 + glm::dvec3(1.1, 0.5, 0.9)}),
+        QuadraticBall({0.02, 0.01, -0.03}, 0.05)};
+    for (int k = 0; k < 5; ++k) {
+        const ScalarField& f = k == 0 ? *torus : static_cast<const ScalarField&>(quadratics[k - 1]);
         const int L = 5;
         const Octree t = build_octree(f, params(L));
-        const double lf = k == 0 ? f.lipschitz() : quadratic.estimate(t.min_corner, t.size);
+        const double lf = k == 0 ? f.lipschitz() : quadratics[k - 1].estimate(t.min_corner, t.size);
         const TreeShape shape = tree_shape(t);
-        INFO((k == 0 ? std::string("torus R = 0.6, r = 0.25")
-                     : "f = |p - c|^2 - 0.36, c = (0.1, -0.2, 0.05), no Lipschitz constant (expected estimate Lf = " +
-                           std::to_string(lf) + ")")
-             << ", level " << L << ": " << shape.leaves.size() << " leaves");
+        std::ostringstream what;
+        if (k == 0) what << "torus R = 0.6, r = 0.25";
+        else
+            what << "f = |p - c|^2 - r^2, c = " << str(quadratics[k - 1].c_) << ", r = " << quadratics[k - 1].r_
+                 << ", bounds " << str(f.bounds().lo) << " - " << str(f.bounds().hi)
+                 << ", no Lipschitz constant (expected estimate Lf = " << lf << ")";
+        INFO(what.str() << ", level " << L << ": " << shape.leaves.size() << " leaves");
         REQUIRE(shape.leaves.size() > 8);
         CHECK(shape.bad_children == 0);
         CHECK(shape.deeper_than_max == 0);
