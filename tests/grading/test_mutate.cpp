@@ -172,6 +172,24 @@ TEST_CASE("schema: the code outside the sites is unchanged; every chosen mutant 
               std::to_string(file.mutants().size() - 1) + ");\n");
 }
 
+TEST_CASE("sites: an array bound in a declaration is a constant; a subscript after a product is not") {
+    const std::string text = block("double f(const double* a, double x) {\n"
+                                   "  const double* rows[2] = {a, a};\n"
+                                   "  double b[3] = {1, 2, 3};\n"
+                                   "  return a[0] * a[4] + x * b[1] + 2 * rows[1][0];\n"
+                                   "}");
+    const auto ms = mutants_of(text);
+    for (const auto& m : ms) {
+        const bool bound = (m.line == 3 && m.original == "2") || (m.line == 4 && m.original == "3" && m.col < 15);
+        if (bound) CHECK_MESSAGE(!m.schema_ok, m.key() << " is an array bound: rebuilt alone");
+        if (m.line == 4 && !bound) CHECK_MESSAGE(m.schema_ok, m.key() << " is an initializer's value: in the schema");
+        if (m.line == 5) CHECK_MESSAGE(m.schema_ok, m.key() << " is an ordinary subscript: in the schema");
+    }
+    const auto c = changes(ms);
+    CHECK(has(c, "4 -> 5"));  // a[4]
+    CHECK(has(c, "1 -> 2"));
+}
+
 TEST_CASE("schema: a relaxed schema computes constexpr tables at start-up and digests them") {
     const std::string text = "namespace geolab::dc {\nnamespace {\n" +
                              block("struct T { int v[4] = {}; };\n"

@@ -557,11 +557,25 @@ SourceFile::SourceFile(std::string file, std::string text, const Vocabulary& voc
     // expressions (or may be used in one): their sites are rebuilt alone.
     {
         std::vector<char> declarator(n, 0);
+        // "T* name[" declares an array of pointers; "x * name[" multiplies: the '*' (or '&') must follow a type
+        // that starts a declaration (after ; { } ( , or a specifier such as const), not an operand
+        auto pointer_declarator = [&](std::size_t star) {
+            if (star < 1) return false;
+            std::size_t t = star - 1;
+            if (type_words().count(txt(t)) || info[t].template_close) return true;
+            if (kind(t) != TokenKind::identifier || keywords().count(txt(t))) return false;
+            while (t >= 2 && txt(t - 1) == "::" && kind(t - 2) == TokenKind::identifier) t -= 2;  // a::b::T
+            if (t == 0) return true;
+            const std::string& before = txt(t - 1);
+            return before == ";" || before == "{" || before == "}" || before == "(" || before == "," ||
+                   before == "const" || before == "static" || before == "constexpr" || before == "inline" ||
+                   before == "extern" || before == "volatile" || before == "mutable" || before == "thread_local";
+        };
         for (std::size_t i = 2; i < n; ++i) {
             if (txt(i) != "[" || info[i].match == std::string::npos) continue;
             const bool after_name = kind(i - 1) == TokenKind::identifier && !keywords().count(txt(i - 1)) &&
-                                    (type_words().count(txt(i - 2)) || info[i - 2].template_close || txt(i - 2) == "*" ||
-                                     txt(i - 2) == "&" ||
+                                    (type_words().count(txt(i - 2)) || info[i - 2].template_close ||
+                                     ((txt(i - 2) == "*" || txt(i - 2) == "&") && pointer_declarator(i - 2)) ||
                                      (kind(i - 2) == TokenKind::identifier && !keywords().count(txt(i - 2))));
             const bool next_dim = txt(i - 1) == "]" && info[i - 1].match != std::string::npos && declarator[info[i - 1].match];
             if (!after_name && !next_dim) continue;
