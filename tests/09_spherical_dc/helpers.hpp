@@ -365,6 +365,33 @@ public:
     Box box_;
 };
 
+// The distance to a sphere without a Lipschitz constant whose gradient is 1000 times too long within 1e-6 of one
+// point (the spike): the octrees' estimate of Lf (2 x the largest |grad f| on a 9^3 lattice) is huge exactly when
+// the lattice holds that point, and then nearly every cell is split. `scale` shrinks the gradient elsewhere (a
+// field whose |grad f| stays below 1 when scale < 0.5).
+class SpikyGradient final : public ScalarField {
+public:
+    SpikyGradient(glm::dvec3 c, double r, glm::dvec3 spike, double scale = 1.0) : c_(c), r_(r), spike_(spike), scale_(scale) {}
+    double value(const glm::dvec3& p) const override { return scale_ * (glm::length(p - c_) - r_); }
+    glm::dvec3 gradient(const glm::dvec3& p) const override {
+        const glm::dvec3 g = scale_ * glm::normalize(p - c_ + glm::dvec3(1e-300));
+        return glm::length(p - spike_) < 1e-6 ? 1000.0 * g : g;
+    }
+    Box bounds() const override { return {c_ - r_, c_ + r_}; }
+    // 2 x the largest |grad f| over `points`: what the octree must estimate when they are its lattice
+    double estimate(const std::vector<glm::dvec3>& points) const {
+        double g = 0;
+        for (const auto& q : points) g = std::max(g, glm::length(gradient(q)));
+        return 2.0 * g;
+    }
+
+private:
+    glm::dvec3 c_;
+    double r_;
+    glm::dvec3 spike_;
+    double scale_;
+};
+
 // A sphere a few finest cells wide at level 10 inside large bounds ([-1, 1]^3): the octrees refine only around it,
 // so max_level = 10 (the largest allowed) stays small and fast.
 class TinySphere final : public ScalarField {

@@ -133,8 +133,41 @@ TEST_CASE("build_spherical_octree: lipschitz() == 0: Lf = 2 max |grad f| on the 
     // a signed distance without a constant: |grad f| = 1 everywhere, Lf = 2
     const NoLipschitz g(geolab::sphere({0.1, 0.0, -0.1}, 0.7));
     const Octree u = build_spherical_octree(g, 4, glm::dvec3(0.0), 0.0, 1.2);
-    INFO("sphere distance without lipschitz(), level 4: expected Lf = 2");
-    check_ball_rule(u, g, 2.0);
+    {
+        INFO("sphere distance without lipschitz(), level 4: expected Lf = 2");
+        check_ball_rule(u, g, 2.0);
+    }
+    // exactly the 9^3 points origin + r_max (i/4 - 1, j/4 - 1, k/4 - 1): a gradient 1000 times too long at a corner of
+    // that lattice must be seen, and at points beside it (index 9 or -1, a half index, twice r_max away) must not
+    const glm::dvec3 o(0.05, -0.02, 0.03), c(0.1, 0.05, -0.05);
+    const double r_max = 1.1;
+    auto at = [&](double i, double j, double k) { return o + r_max * (glm::dvec3(i, j, k) / 4.0 - 1.0); };
+    std::vector<glm::dvec3> lattice;
+    for (int i = 0; i <= 8; ++i)
+        for (int j = 0; j <= 8; ++j)
+            for (int k = 0; k <= 8; ++k) lattice.push_back(at(i, j, k));
+    struct Spike {
+        glm::dvec3 p;
+        double scale;
+        const char* what;
+    };
+    const Spike spikes[] = {{at(0, 0, 0), 1.0, "lattice index (0, 0, 0)"},
+                            {at(8, 8, 8), 1.0, "lattice index (8, 8, 8)"},
+                            {at(9, 4, 4), 1.0, "index (9, 4, 4), beside the lattice"},
+                            {at(4, 9, 4), 1.0, "index (4, 9, 4), beside the lattice"},
+                            {at(4, 4, 9), 1.0, "index (4, 4, 9), beside the lattice"},
+                            {at(0.5, 0.5, 0.5), 1.0, "index (0.5, 0.5, 0.5), between lattice points"},
+                            {at(-4, -4, -4), 1.0, "origin - 2 r_max (1, 1, 1), beside the lattice"},
+                            {at(12, 12, 12), 1.0, "origin + 2 r_max (1, 1, 1), beside the lattice"},
+                            {glm::dvec3(1e9), 0.1, "nowhere, |grad f| = 0.1 everywhere"}};
+    for (const Spike& sp : spikes) {
+        const SpikyGradient f(c, 0.6, sp.p, sp.scale);
+        const Octree t = build_spherical_octree(f, 4, o, 0.0, r_max);
+        INFO("sphere r = 0.6 at " << str(c) << " (distance, no Lipschitz constant), origin " << str(o) << ", shell [0, "
+                                  << r_max << "], level 4; |grad f| 1000 times too long at " << sp.what
+                                  << ": expected Lf = " << f.estimate(lattice));
+        check_ball_rule(t, f, f.estimate(lattice));
+    }
 }
 
 TEST_CASE("build_spherical_octree: every finest cell the surface passes through is a leaf at max level" *
