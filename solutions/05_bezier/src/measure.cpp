@@ -34,25 +34,27 @@ double gauss(const Poly3& D, double a, double b, const std::array<double, N>& x,
     return s * h;
 }
 
-// The adaptive rule: the 10-point value where the 5- and 10-point rules agree within tol (this interval's share)
-// or to rounding (1e-14 of the value), or where [a, b] cannot be halved in double; else the sum over the halves.
-double adapt(const Poly3& D, double a, double b, double tol) {
+// ∫_a^b |C'| by the adaptive rule: the 10-point value where the 5- and 10-point values differ by at most this
+// interval's share of tol, tol · (b − a) / whole (compared without the division: whole may be 0), or where [a, b]
+// cannot be halved in double; otherwise the sum over the two halves.
+double adapt(const Poly3& D, double a, double b, double tol, double whole) {
     const double g5 = gauss(D, a, b, x5, w5), g10 = gauss(D, a, b, x10, w10), m = 0.5 * (a + b);
-    if (std::abs(g10 - g5) <= std::max(tol, 1e-14 * g10) || m <= a || m >= b) return g10;
-    return adapt(D, a, m, 0.5 * tol) + adapt(D, m, b, 0.5 * tol);
+    if (std::abs(g10 - g5) * whole <= tol * (b - a) || m <= a || m >= b) return g10;
+    return adapt(D, a, m, tol, whole) + adapt(D, m, b, tol, whole);
 }
 
-// Candidate parameters in [a, b] of the roots of the polynomial with Bernstein coefficients c on [a, b]: none
-// where the coefficients do not change sign (convex hull); else the midpoint (a root exactly there would be lost
-// by both halves) and the candidates of both halves, down to a width of 2^-40 (the midpoint is then within
-// 2^-41 of the root: far below what changes C at a stationary point).
+// The roots in (a, b) of the polynomial with Bernstein coefficients c on [a, b], in increasing order: none where
+// the coefficients do not change sign (convex hull); otherwise both halves (split by de Casteljau at ½), the split
+// point itself when the polynomial is exactly 0 there, and at width 2^-40 the midpoint (within 2^-41 of the root:
+// far below what moves C at a stationary point).
 void roots(const std::vector<double>& c, double a, double b, std::vector<double>& out, int depth) {
     const auto [lo, hi] = std::minmax_element(c.begin(), c.end());
     if (*lo >= 0 || *hi <= 0) return;
     const double m = 0.5 * (a + b);
-    out.push_back(m);
-    if (depth == 40) return;
-    // Split the Bernstein coefficients at 1/2 (de Casteljau): l on [a, m], r on [m, b].
+    if (depth == 40) {
+        out.push_back(m);
+        return;
+    }
     const std::size_t n = c.size() - 1;
     std::vector<double> l(n + 1), r(n + 1), w = c;
     l[0] = w[0];
@@ -63,6 +65,7 @@ void roots(const std::vector<double>& c, double a, double b, std::vector<double>
         r[n - k] = w[n - k];
     }
     roots(l, a, m, out, depth + 1);
+    if (l[n] == 0) out.push_back(m);  // the value at m: a root there is lost by both halves
     roots(r, m, b, out, depth + 1);
 }
 
@@ -72,15 +75,14 @@ double binomial(int n, int k) {
     return c;
 }
 
-// The Bernstein coefficients (degree 2n − 1) of f(t) = (C(t) − q) · C'(t), whose roots are the stationary points
-// of |C(t) − q|: the product of C − q (coefficients P_i − q, degree n) and C' (D_j, degree n − 1),
-// c_k = Σ_(i+j=k) C(n, i) C(n − 1, j) / C(2n − 1, k) (P_i − q) · D_j.
-std::vector<double> distance_slope(const Poly3& P, const Poly3& D, const glm::dvec3& q) {
-    const int n = int(P.size()) - 1;
-    std::vector<double> c(2 * n, 0.0);
-    for (int i = 0; i <= n; ++i)
-        for (int j = 0; j < n; ++j)
-            c[i + j] += binomial(n, i) * binomial(n - 1, j) / binomial(2 * n - 1, i + j) * glm::dot(P[i] - q, D[j]);
+// The Bernstein coefficients (degree p + q) of A(t) · B(t) for Bézier curves A (degree p) and B (degree q):
+// c_k = Σ_(i+j=k) C(p, i) C(q, j) / C(p + q, k) A_i · B_j.
+std::vector<double> dot_product(const Poly3& A, const Poly3& B) {
+    const int p = int(A.size()) - 1, q = int(B.size()) - 1;
+    std::vector<double> c(p + q + 1, 0.0);
+    for (int i = 0; i <= p; ++i)
+        for (int j = 0; j <= q; ++j)
+            c[i + j] += binomial(p, i) * binomial(q, j) / binomial(p + q, i + j) * glm::dot(A[i], B[j]);
     return c;
 }
 
@@ -93,10 +95,26 @@ double arc_length(const Poly3& P, double a, double b, double tol) {
     if (!(tol > 0)) throw std::invalid_argument("arc_length: tol must be > 0");
     if (!(0 <= a && a <= b && b <= 1)) throw std::invalid_argument("arc_length: need 0 <= a <= b <= 1");
     const Poly3 D = hodograph(P);
-    for (const auto& d : D)
-        if (!std::isfinite(glm::length(d)))
+    double dmax = 0;  // |C'| ≤ dmax (convex hull); its rounding is about 1e-16 dmax
+    for (const auto& d : D) {
+        const double len = glm::length(d);
+        if (!std::isfinite(len))
             throw std::invalid_argument("arc_length: |C'| is not finite (a control point too large or not finite)");
-    return adapt(D, a, b, tol);
+        dmax = std::max(dmax, len);
+    }
+    // Pieces between the stationary points of the speed (roots of C' · C''): |C'| is smooth on each, a cusp (where
+    // it has a kink) is the end of a piece.
+    std::vector<double> ends{a};
+    std::vector<double> cuts;
+    roots(dot_product(D, hodograph(D)), 0.0, 1.0, cuts, 0);
+    for (double t : cuts)
+        if (t > a && t < b) ends.push_back(t);
+    ends.push_back(b);
+    const double rounding_tol = 1e-14 * dmax * (b - a);
+    double length = 0;
+    for (std::size_t k = 0; k + 1 < ends.size(); ++k)
+        length += adapt(D, ends[k], ends[k + 1], std::max(tol, rounding_tol), b - a);
+    return length;
     // END SOLUTION
 }
 
@@ -146,10 +164,12 @@ Closest closest_point(const Poly3& P, const glm::dvec3& q) {
     // BEGIN SOLUTION
     if (P.empty()) throw std::invalid_argument("closest_point: no control points");
     // The nearest point is an end or a stationary point of |C(t) − q|: a root of (C − q) · C'. Candidates in
-    // increasing t, so the first of equally near points (the smallest t) is kept.
-    std::vector<double> candidates{1.0};
-    if (P.size() > 1) roots(distance_slope(P, hodograph(P), q), 0.0, 1.0, candidates, 0);
-    std::sort(candidates.begin(), candidates.end());
+    // increasing t (t = 0 first, as the start), so the first of equally near points (the smallest t) is kept.
+    Poly3 R = P;  // C − q
+    for (auto& r : R) r -= q;
+    std::vector<double> candidates;
+    roots(dot_product(R, hodograph(P)), 0.0, 1.0, candidates, 0);
+    candidates.push_back(1.0);
     Closest best{0.0, P.front(), glm::length(P.front() - q)};
     for (double t : candidates) {
         const glm::dvec3 p = de_casteljau(P, t);

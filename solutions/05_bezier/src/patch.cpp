@@ -61,13 +61,17 @@ struct BasisTable {
     std::vector<std::vector<double>> B, dB;
 };
 BasisTable basis_table(int d, int n) {
-    BasisTable T{std::vector<std::vector<double>>(n + 1), std::vector<std::vector<double>>(n + 1)};
-    for (int i = 0; i <= n; ++i)
+    BasisTable T;
+    for (int i = 0; i <= n; ++i) {
+        const double t = double(i) / n;
+        std::vector<double> B, dB;
         for (int k = 0; k <= d; ++k) {
-            const double t = double(i) / n;
-            T.B[i].push_back(bernstein(d, k, t));
-            T.dB[i].push_back(d * (bernstein(d - 1, k - 1, t) - bernstein(d - 1, k, t)));
+            B.push_back(bernstein(d, k, t));
+            dB.push_back(d * (bernstein(d - 1, k - 1, t) - bernstein(d - 1, k, t)));
         }
+        T.B.push_back(B);
+        T.dB.push_back(dB);
+    }
     return T;
 }
 // END SOLUTION
@@ -131,18 +135,22 @@ PatchMesh tessellate_patches(const std::vector<BezierPatch>& patches, int n, dou
         if (flip) soup.add_face({x, z, y});
         else soup.add_face({x, y, z});
     };
-    std::vector<std::uint32_t> id((n + 1) * (n + 1));
     for (const auto& S : patches) {
         const int du = S.degree_u, dv = S.degree_v;
         const BasisTable Tu = basis_table(du, n), Tv = basis_table(dv, n);
+        std::vector<std::uint32_t> id;  // the vertex of sample (i, j) at i (n + 1) + j
         for (int i = 0; i <= n; ++i) {
             // The v-curves of the columns' values and u-derivatives at u = i/n.
-            Poly3 q(dv + 1, glm::dvec3(0.0)), qu(dv + 1, glm::dvec3(0.0));
-            for (int j = 0; j <= dv; ++j)
+            Poly3 q, qu;
+            for (int j = 0; j <= dv; ++j) {
+                glm::dvec3 x(0.0), xu(0.0);
                 for (int a = 0; a <= du; ++a) {
-                    q[j] += Tu.B[i][a] * S.points[a * (dv + 1) + j];
-                    qu[j] += Tu.dB[i][a] * S.points[a * (dv + 1) + j];
+                    x += Tu.B[i][a] * S.points[a * (dv + 1) + j];
+                    xu += Tu.dB[i][a] * S.points[a * (dv + 1) + j];
                 }
+                q.push_back(x);
+                qu.push_back(xu);
+            }
             for (int j = 0; j <= n; ++j) {
                 glm::dvec3 p(0.0), su(0.0), sv(0.0);
                 for (int b = 0; b <= dv; ++b) {
@@ -152,7 +160,7 @@ PatchMesh tessellate_patches(const std::vector<BezierPatch>& patches, int n, dou
                 }
                 const glm::dvec3 nrm = unit_normal(S, double(i) / n, double(j) / n, su, sv);
                 const bool on_border = i == 0 || j == 0 || i == n || j == n;
-                id[i * (n + 1) + j] = on_border ? weld(p, nrm) : add_vertex(p, nrm);
+                id.push_back(on_border ? weld(p, nrm) : add_vertex(p, nrm));
             }
         }
         for (int i = 0; i < n; ++i)

@@ -97,10 +97,12 @@ double signed_curvature(const Poly2& P, double t);
 // ==== Task 3: measures (handout §4) ===========================================================================
 
 //! The length of C on [a, b] (a ≤ b, both in [0, 1]) by Gauss–Legendre quadrature of |C'| mapped to [a, b],
-//! adaptive: an interval whose 5- and 10-point values differ by more than max(its share of tol, 1e-14 × its
-//! 10-point value) is halved, its share being tol · its length / (b − a) (the 1e-14 stops the halving at rounding
-//! when tol is below it); an interval too small to halve in double is kept. The result is the sum of the kept
-//! intervals' 10-point values, within tol of the true length (tol > 0 absolute).
+//! adaptive, in pieces. [a, b] is first cut where the speed |C'| is stationary: the roots in (a, b) of C' · C''
+//! (degree 2n − 3), to within 1e-12 — a cusp is one, and two rules cannot see a kink near an interval's end. On
+//! each piece an interval whose 5- and 10-point values differ by more than its share of T, T · its length / (b − a),
+//! is halved; T = max(tol, 1e-14 · (b − a) · max_k |n ΔP_k|) (|C'| is known to about 1e-16 of its largest
+//! control point, so a tol below that acts as that); an interval too small to halve in double is kept. The result
+//! is the sum of the kept intervals' 10-point values: within tol of the true length (tol > 0 absolute).
 //! \throw std::invalid_argument when P is empty, tol ≤ 0, not 0 ≤ a ≤ b ≤ 1, or |C'| overflows (a hodograph point
 //!        whose length is not finite: a control point too large or not finite).
 double arc_length(const Poly3& P, double a, double b, double tol);
