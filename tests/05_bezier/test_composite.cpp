@@ -160,10 +160,10 @@ TEST_SUITE("Task 4: composite curves") {
                 CHECK(std::abs(glm::length(g1[1] - g1[0]) - glm::length(b[1] - b[0])) <= 1e-12 * (1 + scale_of(b)));
                 for (int k = 2; k <= m; ++k) CHECK(g1[k] == b[k]);
             }
-        CHECK_THROWS_AS(join_c1(Poly3{{0, 0, 0}}, A), std::invalid_argument);
-        CHECK_THROWS_AS(join_c1(A, Poly3{{0, 0, 0}}), std::invalid_argument);
-        CHECK_THROWS_AS(join_g1(Poly3{{0, 0, 0}}, A), std::invalid_argument);
-        CHECK_THROWS_AS(join_g1(A, Poly3{{0, 0, 0}}), std::invalid_argument);
+        CHECK_THROWS_AS(join_c1(Poly3{{1, 2, 3}}, A), std::invalid_argument);
+        CHECK_THROWS_AS(join_c1(A, Poly3{{1, 2, 3}}), std::invalid_argument);
+        CHECK_THROWS_AS(join_g1(Poly3{{1, 2, 3}}, A), std::invalid_argument);
+        CHECK_THROWS_AS(join_g1(A, Poly3{{1, 2, 3}}), std::invalid_argument);
         CHECK_THROWS_AS(join_g1(Poly3{{1, 1, 1}, {1, 1, 1}}, A), std::invalid_argument);
         CHECK_THROWS_AS(join_g1(A, Poly3{{1, 1, 1}, {1, 1, 1}, {2, 0, 0}}), std::invalid_argument);  // b_1 = b_0
         // a first leg of length exactly 1 is a length like any other

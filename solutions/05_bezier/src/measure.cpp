@@ -16,21 +16,27 @@ namespace {
 // BEGIN SOLUTION
 // STUB: // Helper functions of your own can go here.
 
-// Gauss–Legendre rules on [−1, 1]: the non-negative roots x_i of the Legendre polynomial P_N and their weights
-// (the rule uses ±x_i, and x_0 = 0 once when N is odd). Computed by Newton on P_N in 60-digit arithmetic.
-constexpr std::array<double, 3> x5{0.0, 0.5384693101056831, 0.906179845938664},
-    w5{0.5688888888888889, 0.47862867049936647, 0.23692688505618908};
-constexpr std::array<double, 5> x10{0.14887433898163122, 0.4333953941292472, 0.6794095682990244,
-                                    0.8650633666889845, 0.9739065285171717},
-    w10{0.29552422471475287, 0.26926671930999635, 0.21908636251598204, 0.1494513491505806, 0.06667134430868814};
+// Gauss–Legendre rules on [−1, 1]: the non-negative roots x of the Legendre polynomial P_N and their weights w
+// (the rule uses ±x, and x = 0 once when N is odd). Computed by Newton on P_N in 60-digit arithmetic.
+struct Node {
+    double x, w;
+};
+constexpr std::array<Node, 3> gl5{{{0.0, 0.5688888888888889},
+                                   {0.5384693101056831, 0.47862867049936647},
+                                   {0.906179845938664, 0.23692688505618908}}};
+constexpr std::array<Node, 5> gl10{{{0.14887433898163122, 0.29552422471475287},
+                                    {0.4333953941292472, 0.26926671930999635},
+                                    {0.6794095682990244, 0.21908636251598204},
+                                    {0.8650633666889845, 0.1494513491505806},
+                                    {0.9739065285171717, 0.06667134430868814}}};
 
-// ∫_a^b |C'| by the rule (x, w) mapped to [a, b]; D is C's hodograph.
+// ∫_a^b |C'| by the rule mapped to [a, b]; D is C's hodograph.
 template <std::size_t N>
-double gauss(const Poly3& D, double a, double b, const std::array<double, N>& x, const std::array<double, N>& w) {
+double gauss(const Poly3& D, double a, double b, const std::array<Node, N>& rule) {
     const double h = 0.5 * (b - a), m = 0.5 * (a + b);
     auto speed = [&](double t) { return glm::length(de_casteljau(D, t)); };
     double s = 0;
-    for (std::size_t i = 0; i < N; ++i) s += w[i] * (x[i] == 0 ? speed(m) : speed(m + h * x[i]) + speed(m - h * x[i]));
+    for (const Node& q : rule) s += q.w * (q.x == 0 ? speed(m) : speed(m + h * q.x) + speed(m - h * q.x));
     return s * h;
 }
 
@@ -38,7 +44,7 @@ double gauss(const Poly3& D, double a, double b, const std::array<double, N>& x,
 // interval's share of tol, tol · (b − a) / whole (compared without the division: whole may be 0), or where [a, b]
 // cannot be halved in double; otherwise the sum over the two halves.
 double adapt(const Poly3& D, double a, double b, double tol, double whole) {
-    const double g5 = gauss(D, a, b, x5, w5), g10 = gauss(D, a, b, x10, w10), m = 0.5 * (a + b);
+    const double g5 = gauss(D, a, b, gl5), g10 = gauss(D, a, b, gl10), m = 0.5 * (a + b);
     if (std::abs(g10 - g5) * whole <= tol * (b - a) || m <= a || m >= b) return g10;
     return adapt(D, a, m, tol, whole) + adapt(D, m, b, tol, whole);
 }
