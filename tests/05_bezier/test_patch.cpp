@@ -236,6 +236,18 @@ TEST_SUITE("Task 5: tensor-product patches") {
         check_mesh("chain: C's left corners within 0.25 of A's and of B's (A earlier)",
                    {square(0, 1), square(1.375, 2.375), square(1.1875, 3)}, 1, 0.25, false);
         check_mesh("the same, n = 2", {square(0, 1), square(1.375, 2.375), square(1.1875, 3)}, 2, 0.25, false);
+        // diagonal offsets: within weld_tol although x + y + z differs by more than weld_tol (√3 · 0.125 ≈ 0.217 ≤ 0.25
+        // with x + y + z 0.375 apart; √3 ≤ 2 with 3 apart); both directions
+        auto moved = [](BezierPatch S, const glm::dvec3& d) {
+            for (auto& p : S.points) p += d;
+            return S;
+        };
+        check_mesh("square and one moved by (1/8, 1/8, 1/8) past its right edge",
+                   {square(0, 1), moved(square(1, 2), {0.125, 0.125, 0.125})}, 1, 0.25, false);
+        check_mesh("square and one moved by (−1/8, −1/8, −1/8) past its left edge",
+                   {square(0, 1), moved(square(-1, 0), {-0.125, -0.125, -0.125})}, 2, 0.25, false);
+        check_mesh("large squares, offset (1, 1, 1), weld_tol 2",
+                   {square(0, 10, 0, 10), moved(square(10, 20, 0, 10), {1, 1, 1})}, 1, 2.0, false);
         // interior samples are never welded (B's corner lies on A's centre sample)
         check_mesh("B's corner on A's interior sample", {square(0, 2, 0, 2), square(1, 3, 1, 3)}, 2, 1e-9, false);
         // weld_tol = 0 welds equal positions only

@@ -112,21 +112,30 @@ PatchMesh tessellate_patches(const std::vector<BezierPatch>& patches, int n, dou
     for (const auto& S : patches) check(S, "tessellate_patches");
     PatchMesh mesh;
     auto& soup = mesh.soup;
+    const std::size_t samples = patches.size() * (n + 1) * (n + 1);  // reserve() sizes: capacity only
+    soup.positions.reserve(samples);
+    mesh.normals.reserve(samples);
+    soup.indices.reserve(6 * samples);
+    soup.offsets.reserve(2 * samples);
     auto add_vertex = [&](const glm::dvec3& p, const glm::dvec3& nrm) {
         soup.positions.push_back(p);
         mesh.normals.push_back(flip ? -nrm : nrm);
         return std::uint32_t(soup.positions.size() - 1);
     };
-    // Border vertices by x: a border sample becomes the earliest border vertex within weld_tol, or a new one.
+    // Border vertices by key x + y + z: a border sample becomes the earliest border vertex within weld_tol, or a new
+    // one. Within weld_tol the keys differ by at most √3 weld_tol < 2 weld_tol (the margin absorbs the keys'
+    // rounding); the teapot's seams lie in the planes x = 0 and y = 0, which one coordinate alone would not spread.
     std::multimap<double, std::uint32_t> border;
     const std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
     auto weld = [&](const glm::dvec3& p, const glm::dvec3& nrm) {
+        const double key = p.x + p.y + p.z;
         std::uint32_t found = none;
-        for (auto it = border.lower_bound(p.x - weld_tol); it != border.end() && it->first <= p.x + weld_tol; ++it)
+        for (auto it = border.lower_bound(key - 2 * weld_tol); it != border.end() && it->first <= key + 2 * weld_tol;
+             ++it)
             if (glm::length(soup.positions[it->second] - p) <= weld_tol) found = std::min(found, it->second);
         if (found != none) return found;
         const std::uint32_t v = add_vertex(p, nrm);
-        border.emplace(p.x, v);
+        border.emplace(key, v);
         return v;
     };
     // A triangle turning like S_u × S_v (reversed when flip); none when two of its vertices are one.
@@ -135,13 +144,22 @@ PatchMesh tessellate_patches(const std::vector<BezierPatch>& patches, int n, dou
         if (flip) soup.add_face({x, z, y});
         else soup.add_face({x, y, z});
     };
+    std::map<int, BasisTable> tables;  // by degree: the teapot's 32 patches share one
+    auto table = [&](int d) -> const BasisTable& {
+        auto it = tables.find(d);
+        if (it == tables.end()) it = tables.emplace(d, basis_table(d, n)).first;
+        return it->second;
+    };
+    std::vector<std::uint32_t> id;  // the vertex of sample (i, j) at i (n + 1) + j
+    Poly3 q, qu;
     for (const auto& S : patches) {
         const int du = S.degree_u, dv = S.degree_v;
-        const BasisTable Tu = basis_table(du, n), Tv = basis_table(dv, n);
-        std::vector<std::uint32_t> id;  // the vertex of sample (i, j) at i (n + 1) + j
+        const BasisTable &Tu = table(du), &Tv = table(dv);
+        id.clear();
         for (int i = 0; i <= n; ++i) {
             // The v-curves of the columns' values and u-derivatives at u = i/n.
-            Poly3 q, qu;
+            q.clear();
+            qu.clear();
             for (int j = 0; j <= dv; ++j) {
                 glm::dvec3 x(0.0), xu(0.0);
                 for (int a = 0; a <= du; ++a) {
