@@ -248,6 +248,8 @@ TEST_SUITE("Task 5: tensor-product patches") {
                    {square(0, 1), moved(square(-1, 0), {-0.125, -0.125, -0.125})}, 2, 0.25, false);
         check_mesh("large squares, offset (1, 1, 1), weld_tol 2",
                    {square(0, 10, 0, 10), moved(square(10, 20, 0, 10), {1, 1, 1})}, 1, 2.0, false);
+        check_mesh("large squares, offset (−1, −1, −1), weld_tol 2",
+                   {square(0, 10, 0, 10), moved(square(-10, 0, 0, 10), {-1, -1, -1})}, 1, 2.0, false);
         // interior samples are never welded (B's corner lies on A's centre sample)
         check_mesh("B's corner on A's interior sample", {square(0, 2, 0, 2), square(1, 3, 1, 3)}, 2, 1e-9, false);
         // weld_tol = 0 welds equal positions only
