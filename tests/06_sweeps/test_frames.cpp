@@ -84,10 +84,18 @@ TEST_SUITE("Task 5: frames") {
         CHECK_MESSAGE(rotation_minimizing_frames(two, {0, 0, 1}).frames.size() == 2, "two samples: two RMF frames");
     }
 
-    TEST_CASE("frenet_frames: a closed path wraps around (the regular 12-gon: N points to the centre everywhere)" *
-              geolab::points(1) *
+    TEST_CASE("frenet_frames: a closed path wraps around (a coarse trefoil; the regular 12-gon)" * geolab::points(1) *
               geolab::hint("On a closed path sample 0's neighbours are samples n − 1 and 1, and sample n − 1's are n − 2 "
                            "and 0.")) {
+        const Path knot = trefoil_path(16, 1.0);  // 16 samples: neighbours far apart, so the wrong ones show
+        const auto fk = frenet_frames(knot);
+        REQUIRE(fk.size() == 16);
+        for (std::size_t i = 0; i < 16; ++i) {
+            const glm::dvec3 k = knot.tangents[(i + 1) % 16] - knot.tangents[(i + 15) % 16], t = knot.tangents[i];
+            const glm::dvec3 want = glm::normalize(k - glm::dot(k, t) * t);
+            CHECK_MESSAGE(glm::length(fk[i].N - want) < 1e-9, "trefoil_path(16), sample " << i << ": N from k = T" << (i + 1) % 16
+                                                              << " − T" << (i + 15) % 16 << " is " << str(want) << ", got " << str(fk[i].N));
+        }
         std::vector<glm::dvec3> pts;
         for (int i = 0; i < 12; ++i) pts.push_back({2 * std::cos(2 * pi * i / 12), 2 * std::sin(2 * pi * i / 12), 1});
         const auto f = frenet_frames(polyline_path(pts, true));
@@ -232,6 +240,13 @@ TEST_SUITE("Task 5: frames") {
         CHECK_MESSAGE(glm::length(r.frames[1].N - glm::dvec3(-1, 0, 0)) < 1e-15,
                       "points (0,0,0) (1,0,0), both tangents (0,1,0), N₀ (1,0,0): N₁ = the reflection (−1, 0, 0), got "
                           << str(r.frames[1].N));
+        // A step almost sideways: t_L is near Tᵢ₊₁ (|v₂|² ≈ 0.08), and the second reflection still counts.
+        const Path sharp{{{0, 0, 0}, {1, 0, 0.2}}, {glm::normalize(glm::dvec3(0.3, 1, 0)), glm::normalize(glm::dvec3(0, 1, 0.1))}, false};
+        const glm::dvec3 n0 = glm::normalize(glm::cross(sharp.tangents[0], glm::dvec3(0, 0, 1)));
+        const glm::dvec3 want = reflect_step(sharp.points[0], sharp.tangents[0], n0, sharp.points[1], sharp.tangents[1]);
+        const RmfResult rs = rotation_minimizing_frames(sharp, n0);
+        CHECK_MESSAGE(glm::length(rs.frames[1].N - want) < 1e-12, "a sharp step: N₁ expected " << str(want) << " (both "
+                                                                  "reflections), got " << str(rs.frames[1].N));
     }
 
     TEST_CASE("rotation_minimizing_frames: a planar closed curve has mismatch 0; bad input is rejected" * geolab::points(1) *

@@ -89,6 +89,12 @@ TEST_SUITE("Task 1: profiles") {
                         "edge 4 ending on edge 0", "edges 0 and 4 meet");
         expect_rejected({Loop{{0, 0}, {4, 0}, {3, 0}, {1, 0}, {1, 2}}, {}}, "edge 2 lying along edge 0 (folded back)",
                         "edges 0 and 2 meet");
+        expect_rejected({Loop{{0, 0}, {0, 4}, {0, 3}, {0, 1}, {2, 1}}, {}}, "edge 2 lying along the vertical edge 0 (folded back)",
+                        "edges 0 and 2 meet");
+        expect_rejected({Loop{{0, 0}, {1, 0}, {1, 2}, {3, 2}, {3, 0}, {2, 0}, {1, 0}, {0.5, -1}}, {}},
+                        "edges 0 and 5 on one line, touching end to end at (1, 0)", "edges 0 and 5 meet");
+        expect_rejected({Loop{{0, 0}, {0, 1}, {-2, 1}, {-2, 3}, {0, 3}, {0, 2}, {0, 1}, {1, 0.5}}, {}},
+                        "vertical edges 0 and 5 on one line, touching end to end at (0, 1)", "edges 0 and 5 meet");
         expect_rejected({Loop{{0, 0}, {1, 0}}, {}}, "two points", "2 vertices (at least 3)");
         expect_rejected({Loop{{0, 0}}, {}}, "one point", "1 vertices (at least 3)");
         expect_rejected({Loop{{0, 0}, {1, 0}, {1, 0}, {0, 1}}, {}}, "two equal consecutive points", "vertices 1 and 2 are equal");

@@ -166,6 +166,13 @@ TEST_SUITE("Task 6: sweeps") {
         CHECK_MESSAGE((close(o.min_radius_of_curvature, std::sqrt(28.25) / 2, 1e-12) && o.at_sample == 3),
                       "the open path (0,0,0) (4,0,0) (4,4,0) (0,4,0) (0,0.5,0): circumradius √28.25/2 at sample 3 (its ends "
                       "have no corner), got " << o.min_radius_of_curvature << " at sample " << o.at_sample);
+        // Nor its last sample: (0,4,0) (0,1,0) (1,0.5,0) turns at sample 4 (circumradius √(1.25·13.25)/2), while the
+        // last sample with the first as a neighbour would give (0,1,0) (1,0.5,0) (0,0,0), circumradius 0.625.
+        pts = {{0, 0, 0}, {4, 0, 0}, {4, 4, 0}, {0, 4, 0}, {0, 1, 0}, {1, 0.5, 0}};
+        const SweepCheck l = check_sweep({circle_loop({0, 0}, 0.1, 8), {}}, polyline_path(pts, false));
+        CHECK_MESSAGE((close(l.min_radius_of_curvature, std::sqrt(1.25 * 13.25) / 2, 1e-12) && l.at_sample == 4),
+                      "the open path (0,0,0) (4,0,0) (4,4,0) (0,4,0) (0,1,0) (1,0.5,0): circumradius " << std::sqrt(1.25 * 13.25) / 2
+                          << " at sample 4, got " << l.min_radius_of_curvature << " at sample " << l.at_sample);
         // A tie counts: a right-angle corner of legs 3 and 4 has circumradius 5/2 exactly, as far as the profile reaches.
         const Loop diamond{{2.5, 0}, {0, 1}, {-1, 0}, {0, -1}};
         pts = {{0, 0, 0}, {3, 0, 0}, {3, 4, 0}};

@@ -65,6 +65,10 @@ TEST_SUITE("Task 2: triangulation") {
         const Profile tip{rectangle_loop(0, 0, 10, 10), {Loop{{8, 5}, {2, 2}, {2, 8}}}};
         check_triangulation(tip, triangulate(tip));
         // A hole in a pocket of another hole: the pocket's mouth is the only way out.
+        // A chevron whose rightmost point (1, 0) sees one vertex only: the outer loop's first, (10, 0), straight ahead
+        // (the others are behind the chevron; its notch (−2, 0) lies on the same line, behind the rightmost point).
+        const Profile chevron{Loop{{10, 0}, {-10, 10}, {-10, -10}}, {Loop{{1, 0}, {-4, -6}, {-2, 0}, {-4, 6}}}};
+        check_triangulation(chevron, triangulate(chevron));
         const Profile pocket{rectangle_loop(0, 0, 12, 12),
                              {reversed(Loop{{2, 2}, {10, 2}, {10, 10}, {2, 10}, {2, 7}, {8, 7}, {8, 5}, {2, 5}}),
                               reversed(rectangle_loop(1, 5.5, 7, 6.5))}};
@@ -81,6 +85,18 @@ TEST_SUITE("Task 2: triangulation") {
             const Profile p = grid_profile(rng, rng.integer(1, 5), rng.integer(1, 4), rng.integer(1, 8));
             check_triangulation(p, triangulate(p));
         }
+        // Found by a random search: (16, 4) is reflex and joined by several bridges; each must join the right copy.
+        const Profile copies{Loop{{17, 20}, {16, 20}, {16, 5}, {16, 4}, {4, 4}, {0, 4}, {0, 1}, {0, 0}, {16, 0}, {20, 0}, {20, 20}},
+                             {Loop{{17, 18}, {17, 19}, {18, 19}, {19, 19}, {19, 18}, {19, 17}, {18, 17}, {17, 17}},
+                              Loop{{15, 3}, {15, 2}, {15, 1}, {14, 1}, {13, 1}, {13, 2}, {13, 3}, {14, 3}},
+                              Loop{{17, 10}, {18, 11}, {19, 10}, {18, 9}},
+                              Loop{{1, 2.5}, {3, 2.5}, {3, 2}, {1, 2}},
+                              Loop{{5, 1}, {5, 3}, {7, 3}, {7, 1}},
+                              Loop{{17, 6.5}, {19, 6.5}, {19, 6}, {17, 6}},
+                              Loop{{18, 3}, {19, 2}, {18, 1}, {17, 2}},
+                              Loop{{10, 2}, {11, 2}, {11, 1}, {9, 1}, {9, 3}, {10, 3}},
+                              Loop{{17, 13}, {17, 15}, {19, 15}, {19, 13}}}};
+        check_triangulation(copies, triangulate(copies));
     }
 
     TEST_CASE("triangulate: combs; collinear points; a loop starting at a straight corner" * geolab::points(2) *
@@ -110,3 +126,4 @@ TEST_SUITE("Task 2: triangulation") {
         CHECK_THROWS_AS(triangulate({Loop{{0, 0}, {2, 2}, {2, 0}, {0, 2}}, {}}), std::invalid_argument);
     }
 }  // TEST_SUITE
+
