@@ -173,6 +173,17 @@ TEST_SUITE("Task 6: sweeps") {
         CHECK_MESSAGE((close(l.min_radius_of_curvature, std::sqrt(1.25 * 13.25) / 2, 1e-12) && l.at_sample == 4),
                       "the open path (0,0,0) (4,0,0) (4,4,0) (0,4,0) (0,1,0) (1,0.5,0): circumradius " << std::sqrt(1.25 * 13.25) / 2
                           << " at sample 4, got " << l.min_radius_of_curvature << " at sample " << l.at_sample);
+        // A path that comes back near itself is no curvature problem: a coil wound tighter than the profile (pitch
+        // 2π·0.05 ≈ 0.31 < the diameter 0.6; radius of curvature ≈ 2). check_sweep sees nothing; the mesh does.
+        const Path coil = helix_path(2, 0.05, 3, 300);
+        const Profile thick{circle_loop({0, 0}, 0.3, 12), {}};
+        const SweepCheck k = check_sweep(thick, coil);
+        CHECK_MESSAGE((!k.self_intersects && close(k.min_radius_of_curvature, (4 + 0.0025) / 2, 1e-3)),
+                      "a coil of radius 2, pitch 2π·0.05: radius of curvature about 2.00 > 0.3, no local self-intersection; got "
+                          << k.min_radius_of_curvature << ", " << k.self_intersects);
+        const auto kc = geolab::check_surface(sweep(thick, coil, projected_frames(coil, {0, 0, 1})));
+        CHECK_MESSAGE(kc.self_intersecting_pairs() > 0, "the coil's turns overlap: lib's check_surface should find "
+                                                        "intersecting face pairs in your sweep, found none");
         // A tie counts: a right-angle corner of legs 3 and 4 has circumradius 5/2 exactly, as far as the profile reaches.
         const Loop diamond{{2.5, 0}, {0, 1}, {-1, 0}, {0, -1}};
         pts = {{0, 0, 0}, {3, 0, 0}, {3, 4, 0}};

@@ -194,7 +194,9 @@ PolygonSoup sweep(const Profile& p, const Path& path, const std::vector<Frame>& 
 
 //! The local self-intersection check of a sweep: the profile's radius (largest distance of a profile point from
 //! the path, i.e. from (0, 0)) against the path's smallest radius of curvature (the circumradius of each three
-//! consecutive samples; wrapping on a closed path; collinear samples have infinite radius).
+//! consecutive samples; wrapping on a closed path; collinear samples have infinite radius). Local only: a path that
+//! comes back near itself (a coil wound tighter than the profile, strands of a knot too close) has no tight turn,
+//! and this check does not see it; lib's check_surface on the mesh does (geolab sweep runs both, handout §7).
 struct SweepCheck {
     double profile_radius = 0.0;
     double min_radius_of_curvature = 0.0;  //!< +infinity for a straight path
