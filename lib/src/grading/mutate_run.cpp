@@ -65,6 +65,14 @@ std::string trim(const std::string& s) {
     return s.substr(a, s.find_last_not_of(" \t\r\n") - a + 1);
 }
 
+// At most n bytes of s, cut before a UTF-8 continuation byte so that no character is split (a split one makes
+// the JSON log line invalid: nlohmann::json refuses to dump it).
+std::string utf8_prefix(const std::string& s, std::size_t n) {
+    if (s.size() <= n) return s;
+    while (n > 0 && (static_cast<unsigned char>(s[n]) & 0xC0) == 0x80) --n;
+    return s.substr(0, n);
+}
+
 // A trusted command (compiler, linker, git, ninja) with plain limits.
 CommandResult run_plain(const std::vector<std::string>& argv, double timeout_s) {
     RunOptions o;
@@ -806,7 +814,7 @@ MutateReport run_mutate(const MutateOptions& opt) {
                 // the first test of a fresh process: exactly as grading runs it, nothing to confirm
                 r.outcome = Outcome::killed;
                 r.detail = "'" + tests[order[0]].name + "' failed";
-                if (!v.back().message.empty()) r.detail += ": " + v.back().message.substr(0, 200);
+                if (!v.back().message.empty()) r.detail += ": " + utf8_prefix(v.back().message, 200);
                 std::lock_guard lock(out_mutex);
                 last_killer[m.file] = order[0];
                 ++kills[order[0]];
@@ -838,7 +846,7 @@ MutateReport run_mutate(const MutateOptions& opt) {
             if (first) {
                 r.outcome = tr.status == Status::timeout ? Outcome::timed_out : Outcome::killed;
                 r.detail = "'" + t.name + "' " + to_string(tr.status);
-                if (!tr.messages.empty()) r.detail += ": " + tr.messages.front().substr(0, 200);
+                if (!tr.messages.empty()) r.detail += ": " + utf8_prefix(tr.messages.front(), 200);
                 std::lock_guard lock(out_mutex);
                 last_killer[m.file] = i;
                 ++kills[i];
