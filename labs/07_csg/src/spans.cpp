@@ -13,7 +13,11 @@ namespace geolab::csg {
 
 // Helper functions of your own can go here.
 
-std::vector<Span> primitive_spans(const Node& leaf, const Ray& r) {
+void primitive_spans(const Node& leaf, const Ray& r, std::vector<Span>& out) {
+    throw geolab::NotImplemented(__func__);
+}
+
+bool line_meets_box(const Ray& line, const glm::dvec3& lo, const glm::dvec3& hi) {
     throw geolab::NotImplemented(__func__);
 }
 
