@@ -107,6 +107,14 @@ TEST_SUITE("Task 4: spans in a primitive") {
         check_primitive_family(c, 1.0, 32);
         const auto side = spans_of(c, Ray{{0.6, 0, -3}, {0, 0, 1}});
         CHECK_MESSAGE(side.empty(), "cylinder r = 0.6: the ray along its side line x = 0.6, y = 0 only touches it, got " << str(side));
+        // a ray that crosses the rim of the top only (r = 0.5, h = 0.75: at t = 0.5 it is at (0.5, 0, 0.75), above
+        // the top before and outside the side after): the side's span and the slab's meet in one point
+        Node rim;
+        rim.shape = Shape::cylinder;
+        rim.size = {0.5, 0.5, 0.75};
+        const auto edge = spans_of(rim, Ray{{0, 0, 1.25}, {1, 0, -1}});
+        CHECK_MESSAGE(edge.empty(), "cylinder r = 0.5, h = 0.75, ray (0, 0, 1.25) + t(1, 0, −1) through the rim point "
+                                    "(0.5, 0, 0.75) only: no span (the side gives [−0.5, 0.5], the slab [0.5, 2]), got " << str(edge));
         const auto axis = spans_of(c, Ray{{0.1, 0.2, -3}, {0, 0, 2}});
         REQUIRE_MESSAGE(axis.size() == 1, "cylinder, ray parallel to the axis inside: [1.05, 1.95], got " << str(axis));
         CHECK(close(axis[0].t0, 1.05, 1e-14));
@@ -159,6 +167,12 @@ TEST_SUITE("Task 4: spans in a primitive") {
         REQUIRE(dn.size() == 1);
         CHECK_MESSAGE(dn[0].t0 == 1, "half-space, ray (0, 0, 2) + t(0, 0, −2): enters at t = 1, got " << dn[0].t0);
         CHECK(spans_of(h, Ray{{0, 0, 1}, {1, 0, 0}}).empty());
+        Node hq = h;  // Q is read only for Shape::quadric: a half-space with a sphere's Q is still z ≤ 0
+        hq.Q = glm::dmat4(1.0);
+        hq.Q[3][3] = -1;
+        const auto hw = spans_of(hq, Ray{{0, 0, 2}, {0, 0, -1}});
+        CHECK_MESSAGE((hw.size() == 1 && hw[0].t0 == 2 && hw[0].t1 == inf), "a half-space whose (unused) Q is the unit "
+                                                                             "sphere's, ray down from z = 2: [2, inf), got " << str(hw));
         // hyperboloid of two sheets z² − x² − y² = 1 as the solid −(z² − x² − y² − 1) ≤ 0 ... i.e. inside |z| ≥ √(1+ρ²)
         Node q;
         q.shape = Shape::quadric;
@@ -188,6 +202,15 @@ TEST_SUITE("Task 4: spans in a primitive") {
         REQUIRE_MESSAGE(down.size() == 1, "the same downwards from z = 5, direction (0, 0, −2): (−inf, 2.5], got " << str(down));
         CHECK(down[0].t0 == -inf);
         CHECK(close(down[0].t1, 2.5, 1e-14));
+        // slower directions: the linear coefficient β = ∓0.5 lies between −1 and 1
+        const auto slow_down = spans_of(pq, Ray{{0, 0, 5}, {0, 0, -0.5}});
+        REQUIRE_MESSAGE(slow_down.size() == 1, "x² + y² − z ≤ 0 from (0, 0, 5), direction (0, 0, −0.5): (−inf, 10], got " << str(slow_down));
+        CHECK(slow_down[0].t0 == -inf);
+        CHECK(close(slow_down[0].t1, 10, 1e-14));
+        const auto slow_up = spans_of(pq, Ray{{0, 0, -5}, {0, 0, 0.5}});
+        REQUIRE_MESSAGE(slow_up.size() == 1, "x² + y² − z ≤ 0 from (0, 0, −5), direction (0, 0, 0.5): [10, inf), got " << str(slow_up));
+        CHECK(close(slow_up[0].t0, 10, 1e-14));
+        CHECK(slow_up[0].t1 == inf);
         // the unit sphere about (1, 0, 0) as a quadric: the normal needs the linear terms (X = (x, y, z, 1))
         Node sq;
         sq.shape = Shape::quadric;
@@ -228,6 +251,7 @@ TEST_SUITE("Task 4: spans in a primitive") {
             {{{-5, 2, 0}, {1, 0, 0}}, true, "in the face plane y = 2 (touching counts)"},
             {{{-5, 2.000001, 0}, {1, 0, 0}}, false, "parallel to x just above the face y = 2"},
             {{{-5, -2.000001, 0}, {1, 0, 0}}, false, "parallel to x just below the face y = −2"},
+            {{{-5, -2, 0}, {1, 0, 0}}, true, "in the face plane y = −2 (touching counts)"},
             {{{-5, 2, 3}, {1, 0, 0}}, true, "along the edge y = 2, z = 3"},
             {{{0.5, 0, -9}, {0, 0, 1}}, true, "parallel to z inside the x and y slabs"},
             {{{5, 5, 5}, {1, -1, 0}}, false, "in the plane z = 5, above the box"},
@@ -616,6 +640,27 @@ TEST_SUITE("Task 6: ray casting") {
         CHECK(hits > 50);
         CHECK_THROWS_AS(render_image(t, cam, 0, 10, {0, 0, 1}), std::invalid_argument);
         CHECK_THROWS_AS(render_image(t, cam, 10, 0, {0, 0, 1}), std::invalid_argument);
+        // exactly width × height rays: a slab just beyond the right edge of the view and one just below it (the
+        // next column's and row's pixel centres would hit them) leave every pixel white
+        {
+            const int w2 = 8, h2 = 6;
+            const double half = std::tan(cam.fov_deg * pi / 360), aspect = double(w2) / h2;
+            // the ray of pixel column x has x/z slope px = (2(x + 0.5)/w − 1)·half·aspect; a box with its left face at
+            // x0 = 4.5·half·aspect, between z = −0.5 and 0.5, is met by slopes ≥ 1.0·half·aspect only
+            const double x0 = 4.5 * half * aspect, y0 = 4.5 * half;
+            const Tree right = leaf(Shape::box, {5, 50, 0.5}, translate({x0 + 5, 0, 0}));
+            const Tree below = leaf(Shape::box, {50, 5, 0.5}, translate({0, -y0 - 5, 0}));
+            const auto outside = render_image(op(Op::unite, right, below), cam, w2, h2, {0, 0, 1});
+            int grey = 0;
+            for (std::size_t i = 0; i < outside.rgba.size(); ++i) grey += outside.rgba[i] != 255;
+            CHECK_MESSAGE(grey == 0, "camera at (0, 0, 4), 8×6 pixels, boxes just right of and just below the view: "
+                                     "every pixel white (cast x < width, y < height only), got " << grey << " channels not 255");
+            // the same boxes moved in by half a pixel are seen in the last column and the last row
+            const Tree right_in = leaf(Shape::box, {5, 50, 0.5}, translate({x0 * 0.8 + 5, 0, 0}));
+            const auto inside = render_image(right_in, cam, w2, h2, {0, 0, 1});
+            CHECK_MESSAGE(inside.rgba[4 * (0 * w2 + w2 - 1)] != 255, "the right box moved into the last column: its pixels are grey");
+            CHECK_MESSAGE(inside.rgba[4 * (0 * w2 + 0)] == 255, "... and the first column stays white");
+        }
         const auto one = render_image(t, cam, 1, 1, {0, 0, 1});
         CHECK_MESSAGE((one.width == 1 && one.height == 1 && one.rgba.size() == 4), "a 1×1 image is allowed");
         // the eye inside a small sphere (radius 0.5 around it): every pixel hits the exit, normal = the ray direction

@@ -72,11 +72,11 @@ void quadratic_spans(double al, double be, double ga, const Ray& r, Grad grad, s
         if (al < 0) span(-inf, inf);
         return;
     }
-    const double q = -0.5 * (be + std::copysign(std::sqrt(disc), be));
-    double t0 = q / al, t1 = q != 0 ? ga / q : -t0;
+    const double q = -0.5 * (be + std::copysign(std::sqrt(disc), be));  // never 0: Δ > 0
+    double t0 = q / al, t1 = ga / q;
     if (t0 > t1) std::swap(t0, t1);
     if (al > 0) {
-        if (t0 < t1) span(t0, t1);
+        span(t0, t1);
     } else {
         span(-inf, t0);
         span(t1, inf);
@@ -104,9 +104,8 @@ void torus_spans(const Node& leaf, const Ray& r, std::vector<Span>& out) {
     const double C = oo + R * R - rr * rr;
     const double dxy = u.x * u.x + u.y * u.y, odxy = o.x * u.x + o.y * u.y, oxy = o.x * o.x + o.y * o.y;
     const std::vector<double> c = {C * C - 4 * R * R * oxy, -8 * R * R * odxy, 2 * C - 4 * R * R * dxy, 0.0, 1.0};
-    std::vector<double> cuts{lo};
-    for (double s : real_roots(c, lo, hi)) cuts.push_back(s);
-    cuts.push_back(hi);
+    std::vector<double> ends = real_roots(c, lo, hi);
+    ends.push_back(hi);
     auto inside = [&](double s) {
         const glm::dvec3 p = o + s * u;
         return std::hypot(std::hypot(p.x, p.y) - R, p.z) < rr;
@@ -118,15 +117,18 @@ void torus_spans(const Node& leaf, const Ray& r, std::vector<Span>& out) {
         const glm::dvec3 c = rho > 0 ? glm::dvec3(R * p.x / rho, R * p.y / rho, 0.0) : glm::dvec3(R, 0, 0);
         return unit_or_zero(p - c);
     };
-    for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
-        const double a = cuts[i], b = cuts[i + 1];
-        if (!(a < b) || !inside(0.5 * (a + b))) continue;
-        if (!out.empty() && out.back().t1 == t_c + a / L) {  // a touching root inside: one span
-            out.back().t1 = t_c + b / L;
+    // The pieces between lo, the roots and hi: inside or outside throughout, read off their midpoints.
+    double a = lo;
+    for (const double b : ends) {
+        const double s0 = std::exchange(a, b);  // the piece [s0, b]
+        if (!(s0 < b) || !inside(0.5 * (s0 + b))) continue;
+        const double t0 = t_c + s0 / L, t1 = t_c + b / L;
+        if (!out.empty() && out.back().t1 == t0) {  // a touching root inside: one span
+            out.back().t1 = t1;
             out.back().n1 = grad(b);
             continue;
         }
-        out.push_back(Span{t_c + a / L, t_c + b / L, grad(a), grad(b)});
+        out.push_back(Span{t0, t1, grad(s0), grad(b)});
     }
 }
 }  // namespace
