@@ -252,6 +252,8 @@ TEST_SUITE("Task 4: spans in a primitive") {
             {{{-5, 2.000001, 0}, {1, 0, 0}}, false, "parallel to x just above the face y = 2"},
             {{{-5, -2.000001, 0}, {1, 0, 0}}, false, "parallel to x just below the face y = −2"},
             {{{-5, -2, 0}, {1, 0, 0}}, true, "in the face plane y = −2 (touching counts)"},
+            {{{-5, -2, 0}, {1, -0.0, 0}}, true, "in the face plane y = −2, a direction component −0 (no division by it)"},
+            {{{-5, 2, 0}, {1, -0.0, 0}}, true, "in the face plane y = 2, a direction component −0"},
             {{{-5, 2, 3}, {1, 0, 0}}, true, "along the edge y = 2, z = 3"},
             {{{0.5, 0, -9}, {0, 0, 1}}, true, "parallel to z inside the x and y slabs"},
             {{{5, 5, 5}, {1, -1, 0}}, false, "in the plane z = 5, above the box"},
