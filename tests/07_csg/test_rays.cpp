@@ -232,7 +232,7 @@ TEST_SUITE("Task 4: spans in a primitive") {
     }
 }
 
-TEST_SUITE("Task 4: spans in a primitive") {
+TEST_SUITE("Task 5: combining interval lists") {
     TEST_CASE("line_meets_box: the three slabs' parameter intervals overlap; touching counts; parallel lines; "
               "unbounded boxes" * geolab::points(2) *
               geolab::hint("Per axis the line is inside the slab lo ≤ x ≤ hi for t between (lo − o)/d and (hi − o)/d "
@@ -277,9 +277,7 @@ TEST_SUITE("Task 4: spans in a primitive") {
         CHECK_MESSAGE(line_meets_box(Ray{{0, 5, 0}, {1, 1e-3, 1}}, ulo, uhi), "the slab |y| ≤ 1: a line crossing y = 1 meets it");
         CHECK_MESSAGE(line_meets_box(Ray{{1e6, -1e6, 3}, {0, 0, 1}}, glm::dvec3(-inf), glm::dvec3(inf)), "all of space meets every line");
     }
-}
 
-TEST_SUITE("Task 5: combining interval lists") {
     TEST_CASE("combine: touching spans merge in a union; no zero-length span anywhere" * geolab::points(2) *
               geolab::hint("Apply every endpoint at the same t before deciding: [0, 1] ∪ [1, 2] = [0, 2], and "
                            "[0, 1] ∩ [1, 2] = nothing (not [1, 1]).")) {

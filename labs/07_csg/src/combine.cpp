@@ -1,7 +1,9 @@
 // Task 5: combining interval lists, Roth's ray casting of CSG trees (handout §6).
+#include <algorithm>
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include <glm/geometric.hpp>
 
@@ -10,6 +12,10 @@
 namespace geolab::csg {
 
 void combine(Op op, const std::vector<Span>& a, const std::vector<Span>& b, std::vector<Span>& out) {
+    throw geolab::NotImplemented(__func__);
+}
+
+bool line_meets_box(const Ray& line, const glm::dvec3& lo, const glm::dvec3& hi) {
     throw geolab::NotImplemented(__func__);
 }
 

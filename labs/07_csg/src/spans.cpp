@@ -17,8 +17,4 @@ void primitive_spans(const Node& leaf, const Ray& r, std::vector<Span>& out) {
     throw geolab::NotImplemented(__func__);
 }
 
-bool line_meets_box(const Ray& line, const glm::dvec3& lo, const glm::dvec3& hi) {
-    throw geolab::NotImplemented(__func__);
-}
-
 }  // namespace geolab::csg

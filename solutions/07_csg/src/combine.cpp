@@ -1,7 +1,9 @@
 // Task 5: combining interval lists, Roth's ray casting of CSG trees (handout §6).
+#include <algorithm>
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include <glm/geometric.hpp>
 
@@ -62,6 +64,25 @@ void combine(Op op, const std::vector<Span>& a, const std::vector<Span>& b, std:
         }
         inside = now;
     }
+    // END SOLUTION
+}
+
+bool line_meets_box(const Ray& line, const glm::dvec3& lo, const glm::dvec3& hi) {
+    // BEGIN SOLUTION
+    const double inf = std::numeric_limits<double>::infinity();
+    double t0 = -inf, t1 = inf;  // the line's parameters inside every slab so far
+    for (int k = 0; k < 3; ++k) {
+        const double o = line.origin[k], d = line.direction[k];
+        if (d == 0) {
+            if (o < lo[k] || o > hi[k]) return false;  // parallel to the slab and outside it
+            continue;
+        }
+        double ta = (lo[k] - o) / d, tb = (hi[k] - o) / d;
+        if (ta > tb) std::swap(ta, tb);
+        t0 = std::max(t0, ta);
+        t1 = std::min(t1, tb);
+    }
+    return t0 <= t1;
     // END SOLUTION
 }
 

@@ -203,22 +203,4 @@ void primitive_spans(const Node& leaf, const Ray& r, std::vector<Span>& out) {
     // END SOLUTION
 }
 
-bool line_meets_box(const Ray& line, const glm::dvec3& lo, const glm::dvec3& hi) {
-    // BEGIN SOLUTION
-    double t0 = -inf, t1 = inf;  // the line's parameters inside every slab so far
-    for (int k = 0; k < 3; ++k) {
-        const double o = line.origin[k], d = line.direction[k];
-        if (d == 0) {
-            if (o < lo[k] || o > hi[k]) return false;  // parallel to the slab and outside it
-            continue;
-        }
-        double ta = (lo[k] - o) / d, tb = (hi[k] - o) / d;
-        if (ta > tb) std::swap(ta, tb);
-        t0 = std::max(t0, ta);
-        t1 = std::min(t1, tb);
-    }
-    return t0 <= t1;
-    // END SOLUTION
-}
-
 }  // namespace geolab::csg

@@ -9,8 +9,9 @@
 //! | 1    | primitives.cpp  | primitive_distance                      | exact signed distances of the primitives    | §2      |
 //! | 2    | sdf.cpp         | smooth_min, sdf (prepared; one-shot)    | ∪ = min, ∩ = max, A − B = max(a, −b), smin  | §3      |
 //! | 3    | pmc.cpp         | classify                                | point membership: in / on / out             | §4      |
-//! | 4    | spans.cpp       | primitive_spans, line_meets_box         | a ray's inside intervals in one primitive   | §5      |
-//! | 5    | combine.cpp     | combine, ray_spans (prepared; one-shot) | Roth's interval lists; skip missed subtrees | §6      |
+//! | 4    | spans.cpp       | primitive_spans                         | a ray's inside intervals in one primitive   | §5      |
+//! | 5    | combine.cpp     | combine, line_meets_box,                | Roth's interval lists; skip missed subtrees | §6      |
+//! |      |                 | ray_spans (prepared; one-shot)          |                                             |         |
 //! | 6    | raycast.cpp     | first_hit (prepared; one-shot),         | the first boundary point, Lambert image     | §7      |
 //! |      |                 | render_image                            |                                             |         |
 //! | 7    | mesh.cpp        | mesh_tree, volume                       | polygonize, divergence theorem              | §8      |
@@ -193,12 +194,6 @@ struct Span {
 //! \throw std::invalid_argument when the node is not a leaf or the direction is zero.
 void primitive_spans(const Node& leaf, const Ray& local, std::vector<Span>& out);
 
-//! Whether the whole line origin + t · direction (t ∈ ℝ) meets the closed box [lo, hi] (Kay and Kajiya's slabs:
-//! the line's parameter intervals inside the three slabs overlap; touching a face, an edge or a corner counts).
-//! Infinite lo or hi are allowed (a slab without a side); a direction component 0 keeps the line inside that
-//! slab or outside it for every t. Precondition: lo ≤ hi, direction not zero.
-bool line_meets_box(const Ray& line, const glm::dvec3& lo, const glm::dvec3& hi);
-
 // ==== Task 5: combining interval lists (handout §6) ===========================================================
 
 //! Replaces `out` with the spans of op(A, B) from A's and B's sorted, disjoint spans (op: unite, intersect or
@@ -209,6 +204,12 @@ bool line_meets_box(const Ray& line, const glm::dvec3& lo, const glm::dvec3& hi)
 //! (they face into B, i.e. out of A − B). `out` is another list than a and b; it keeps its capacity.
 //! \throw std::invalid_argument for Op::leaf or Op::blend.
 void combine(Op op, const std::vector<Span>& a, const std::vector<Span>& b, std::vector<Span>& out);
+
+//! Whether the whole line origin + t · direction (t ∈ ℝ) meets the closed box [lo, hi] (Kay and Kajiya's slabs, as
+//! for a box in Task 4: the line's parameter intervals inside the three slabs overlap; touching a face, an edge or a
+//! corner counts). Infinite lo or hi are allowed (a slab without a side); a direction component 0 (or −0) keeps the
+//! line inside that slab or outside it for every t. Precondition: lo ≤ hi, direction not zero.
+bool line_meets_box(const Ray& line, const glm::dvec3& lo, const glm::dvec3& hi);
 
 //! One span list per node of a tree, reused from ray to ray (lists[i] for node i): once they have grown, casting a
 //! ray allocates nothing. Casting writes them, so each thread has its own.
@@ -283,8 +284,8 @@ GEOLAB_BOUNDARY(sdf, double(const PreparedTree&, const glm::dvec3&))
 GEOLAB_BOUNDARY(sdf, double(const Tree&, const glm::dvec3&))
 GEOLAB_BOUNDARY(classify, Membership(const Tree&, const glm::dvec3&, double))
 GEOLAB_BOUNDARY(primitive_spans, void(const Node&, const Ray&, std::vector<Span>&))
-GEOLAB_BOUNDARY(line_meets_box, bool(const Ray&, const glm::dvec3&, const glm::dvec3&))
 GEOLAB_BOUNDARY(combine, void(Op, const std::vector<Span>&, const std::vector<Span>&, std::vector<Span>&))
+GEOLAB_BOUNDARY(line_meets_box, bool(const Ray&, const glm::dvec3&, const glm::dvec3&))
 GEOLAB_BOUNDARY(ray_spans, void(const PreparedTree&, const Ray&, SpanLists&))
 GEOLAB_BOUNDARY(ray_spans, std::vector<Span>(const Tree&, const Ray&))
 GEOLAB_BOUNDARY(first_hit, std::optional<Hit>(const PreparedTree&, const Ray&, double, SpanLists&))
