@@ -195,23 +195,38 @@ int run_sweep(const SweepOpts& o) {
         }
         mesh = sweeps::sweep(prof, path, frames);
     }
+    // The global check: lib's check_surface counts every pair of faces that meet (exact predicates), so a sweep
+    // whose path comes back within the profile's reach of itself (a coil wound too tight) is found too, although
+    // no turn of the path is too tight for check_sweep.
     const SurfaceCheck c = check_surface(mesh);
     const double volume = sweeps::mesh_volume(mesh), area = sweeps::mesh_area(mesh);
+    const std::size_t crossing = c.self_intersecting_pairs();
     out << "mesh            " << c.summary() << "\n"
         << "volume          " << volume << "\n"
         << "area            " << area << "\n"
+        << "self-intersect  " << (crossing ? std::to_string(crossing) + " pairs of faces meet" : std::string("no")) << "\n"
         << "closed manifold " << (c.closed_manifold() ? "yes (printable)" : "NO") << "\n";
-    write_mesh(o.out, mesh);
-    out << "wrote " << o.out << "\n";
+    const bool write = crossing == 0 || o.force;
+    if (crossing && !o.force)
+        std::cerr << "geolab sweep: the swept surface intersects itself (" << crossing << " pairs of faces meet"
+                  << (report["mode"] == "path" && !report["self_intersects"].get<bool>()
+                          ? "; no turn of the path is too tight, so the path comes back within the profile's reach of itself"
+                          : "")
+                  << "); not written (--force writes it anyway)\n";
+    if (write) {
+        write_mesh(o.out, mesh);
+        out << "wrote " << o.out << "\n";
+    }
     if (o.json) {
         report["vertices"] = c.vertices;
         report["faces"] = c.faces;
         report["euler_characteristic"] = c.euler_characteristic;
         report["components"] = c.components;
+        report["self_intersecting_pairs"] = crossing;
         report["closed_manifold"] = c.closed_manifold();
         report["volume"] = volume;
         report["area"] = area;
-        report["out"] = o.out;
+        report["out"] = write ? nlohmann::json(o.out) : nlohmann::json(nullptr);
         std::cout << report.dump() << "\n";
     }
     return c.closed_manifold() ? 0 : 1;
@@ -239,7 +254,8 @@ void add_sweep(CLI::App& app, int& status) {
     s->add_option("--helix", o->helix, "Sweep along a helix: r h turns samples")->expected(4);
     s->add_option("--trefoil", o->trefoil, "Sweep along the trefoil knot: samples scale")->expected(2);
     s->add_option("--frames", o->frames, "Frames along a path: rmf or frenet")->check(CLI::IsMember({"rmf", "frenet"}))->capture_default_str();
-    s->add_flag("--force", o->force, "Write a sweep even when check_sweep reports a self-intersection");
+    s->add_flag("--force", o->force, "Write a sweep even when it intersects itself (check_sweep's local test or "
+                                     "check_surface's face pairs)");
     s->add_flag("--json", o->json, "Print one JSON object with the figures (stable names) instead of the text lines");
     s->callback([o, &status] {
         try {

@@ -24,6 +24,7 @@
 #include <nlohmann/json.hpp>
 
 #include "geolab/grading/mutate.hpp"
+#include "geolab/grading/report.hpp"
 #include "geolab/grading/runner.hpp"
 #include "text_file.hpp"
 
@@ -70,6 +71,14 @@ std::string trim(const std::string& s) {
     const auto a = s.find_first_not_of(" \t\r\n");
     if (a == std::string::npos) return "";
     return s.substr(a, s.find_last_not_of(" \t\r\n") - a + 1);
+}
+
+// At most n bytes of s, cut before a UTF-8 continuation byte so that no character is split (a split one makes
+// the JSON log line invalid: nlohmann::json refuses to dump it).
+std::string utf8_prefix(const std::string& s, std::size_t n) {
+    if (s.size() <= n) return s;
+    while (n > 0 && (static_cast<unsigned char>(s[n]) & 0xC0) == 0x80) --n;
+    return s.substr(0, n);
 }
 
 // A trusted command (compiler, linker, git, ninja) with plain limits.
@@ -197,13 +206,14 @@ BuildRecipe read_recipe(const fs::path& build, const fs::path& src_dir, const st
     return r;
 }
 
-// The first error line of a compiler's output (for the report).
+// The first error line of a compiler's output (for the report; cut to 300 bytes, then made valid UTF-8 again:
+// compilers quote with ‘ ’).
 std::string first_error(const std::string& out) {
     std::istringstream in(out);
     std::string line;
     while (std::getline(in, line))
-        if (line.find("error") != std::string::npos) return trim(line).substr(0, 300);
-    return trim(out).substr(0, 300);
+        if (line.find("error") != std::string::npos) return valid_utf8(utf8_prefix(trim(line), 300));
+    return valid_utf8(utf8_prefix(trim(out), 300));
 }
 
 // Every file of a folder with its content: what "restored" is checked against.
@@ -964,7 +974,7 @@ MutateReport run_mutate(const MutateOptions& opt) {
                 // the first test of a fresh process: exactly as grading runs it, nothing to confirm
                 r.outcome = Outcome::killed;
                 r.detail = "'" + tests[order[0]].name + "' failed";
-                if (!v.back().message.empty()) r.detail += ": " + v.back().message.substr(0, 200);
+                if (!v.back().message.empty()) r.detail += ": " + valid_utf8(utf8_prefix(v.back().message, 200));
                 std::lock_guard lock(out_mutex);
                 last_killer[m.file] = order[0];
                 ++kills[order[0]];
@@ -996,7 +1006,7 @@ MutateReport run_mutate(const MutateOptions& opt) {
             if (first) {
                 r.outcome = tr.status == Status::timeout ? Outcome::timed_out : Outcome::killed;
                 r.detail = "'" + t.name + "' " + to_string(tr.status);
-                if (!tr.messages.empty()) r.detail += ": " + tr.messages.front().substr(0, 200);
+                if (!tr.messages.empty()) r.detail += ": " + valid_utf8(utf8_prefix(tr.messages.front(), 200));
                 std::lock_guard lock(out_mutex);
                 last_killer[m.file] = i;
                 ++kills[i];
