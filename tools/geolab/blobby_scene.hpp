@@ -30,6 +30,34 @@ inline std::string scene_quote(std::string_view s) {
     return q + (s.size() > 40 ? "...\"" : "\"");
 }
 
+//! SAX events of a JSON text: the first key given twice in one object (empty: none).
+struct DuplicateKeys : nlohmann::json_sax<nlohmann::json> {
+    std::vector<std::set<std::string>> open;  // the keys of each open object
+    std::string duplicate;
+    bool null() override { return true; }
+    bool boolean(bool) override { return true; }
+    bool number_integer(number_integer_t) override { return true; }
+    bool number_unsigned(number_unsigned_t) override { return true; }
+    bool number_float(number_float_t, const string_t&) override { return true; }
+    bool string(string_t&) override { return true; }
+    bool binary(binary_t&) override { return true; }
+    bool start_object(std::size_t) override {
+        open.emplace_back();
+        return true;
+    }
+    bool key(string_t& k) override {
+        if (!open.empty() && !open.back().insert(k).second && duplicate.empty()) duplicate = k;
+        return true;
+    }
+    bool end_object() override {
+        if (!open.empty()) open.pop_back();
+        return true;
+    }
+    bool start_array(std::size_t) override { return true; }
+    bool end_array() override { return true; }
+    bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override { return false; }
+};
+
 //! Parses the text of a blob scene; `file` names it in errors. \throw IoError naming the file and the element.
 inline blobby::BlobScene parse_blob_scene(const std::string& text, const std::string& file) {
     using nlohmann::json;
@@ -42,25 +70,19 @@ inline blobby::BlobScene parse_blob_scene(const std::string& text, const std::st
         if (!std::isfinite(v)) fail(where, "not finite");
         return v;
     };
-    // the keys of each open object, to refuse a key given twice
-    std::vector<std::set<std::string>> keys;
-    std::string duplicate;
-    const json::parser_callback_t on_event = [&](int, json::parse_event_t event, json& parsed) {
-        if (event == json::parse_event_t::object_start) keys.emplace_back();
-        else if (event == json::parse_event_t::object_end && !keys.empty()) keys.pop_back();
-        else if (event == json::parse_event_t::key && !keys.empty() && !keys.back().insert(parsed.get<std::string>()).second &&
-                 duplicate.empty())
-            duplicate = parsed.get<std::string>();
-        return true;
-    };
     json j;
     try {
-        j = json::parse(text, on_event);
+        j = json::parse(text);
     } catch (const json::parse_error& e) {
         const std::size_t at = std::min<std::size_t>(e.byte == 0 ? 0 : e.byte - 1, text.size());
         const std::size_t line = 1 + std::size_t(std::count(text.begin(), text.begin() + long(at), '\n'));
         throw IoError(file, line, std::string("not valid JSON: ") + e.what());
     }
+    // A key given twice: a second, linear pass over the events (nlohmann's parser callback would do it in one, but
+    // it rescans an array at the end of each of its objects: quadratic, 5 s for 200,000 blobs).
+    DuplicateKeys keys;
+    json::sax_parse(text, &keys);
+    const std::string& duplicate = keys.duplicate;
     if (!duplicate.empty()) fail("key " + scene_quote(duplicate), "given twice in one object");
     if (!j.is_object()) fail("top level", "expected an object with \"kernel\", \"threshold\" and \"blobs\"");
     for (const auto& [k, v] : j.items())
