@@ -228,3 +228,46 @@ TEST_SUITE("readers hostile") {
         CHECK(s.nodes[0].M[3][2] == -9);
     }
 }
+
+TEST_SUITE("readers hostile") {
+    // A file cut anywhere before its last token must not read as a smaller, valid file. (Inside the last token a
+    // cut can leave a valid number — "12" cut to "1" — which no reader can tell, Medit's End aside.)
+    TEST_CASE("truncated at every byte: Medit, TetGen and .bpt never read a cut file") {
+        const std::string medit = "MeshVersionFormatted 2\nDimension 3\n" + tet_vertices +
+                                  "Tetrahedra\n1\n1 2 3 4 5\nTriangles\n2\n1 2 3 7\n1 2 4 8\nEnd\n";
+        REQUIRE(geolab::read_medit_from_string(medit).triangles.size() == 2);
+        const std::size_t end = medit.rfind("End") + 3;
+        int cut_errors = 0;
+        for (std::size_t cut = 0; cut < end; ++cut) {
+            const std::string msg = medit_error(medit.substr(0, cut));
+            INFO("Medit cut at byte " << cut << ": " << msg);
+            CHECK(contains(msg, "h.mesh:"));
+            cut_errors += contains(msg, "h.mesh:");
+        }
+        CHECK(cut_errors == int(end));
+        // TetGen: each of the three files cut before its last token (an empty .face means no .face file: skipped)
+        const std::string ele = "1 4 1\n0 0 1 2 3 12\n", face = "1 1\n0 0 1 2 -1\n";
+        REQUIRE(geolab::read_tetgen_from_strings(tet_node, ele, face, "h").triangles.size() == 1);
+        auto last_token = [](const std::string& text) { return text.find_last_of(" \n", text.size() - 2) + 1; };
+        for (int file = 0; file < 3; ++file) {
+            const std::string& full = file == 0 ? tet_node : file == 1 ? ele : face;
+            for (std::size_t cut = file == 2 ? 1 : 0; cut < last_token(full); ++cut) {
+                const std::string part = full.substr(0, cut);
+                const std::string msg = error_of([&] {
+                    geolab::read_tetgen_from_strings(file == 0 ? part : tet_node, file == 1 ? part : ele,
+                                                     file == 2 ? part : face, "h");
+                });
+                INFO("TetGen file " << file << " cut at byte " << cut << ": " << msg);
+                CHECK(contains(msg, "h."));
+            }
+        }
+        // .bpt
+        const std::string bpt = "1\n1 1\n0 0 0\n1 0 0\n0 1 0\n1 1 0.5\n";
+        REQUIRE(geolab::read_bpt_from_string(bpt).size() == 1);
+        for (std::size_t cut = 0; cut < last_token(bpt); ++cut) {
+            const std::string msg = bpt_error(bpt.substr(0, cut));
+            INFO(".bpt cut at byte " << cut << ": " << msg);
+            CHECK(contains(msg, "h.bpt:"));
+        }
+    }
+}
