@@ -4,6 +4,7 @@
 // (labs 02, 04, 05, 07) very long lines and tokens, many sections, vector variables that used to blow up, deep JSON,
 // and cuts of the system's DejaVu font. SWEEP_DIR (when given) gets the long profile of geolab sweep's replay. The
 // corpus replays read them; the fuzzers may start from them.
+#include <cmath>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
@@ -115,6 +116,13 @@ int main(int argc, char** argv) {
             std::filesystem::create_directories(sweep);
             // a 2 MB token (the message quoted it whole)
             std::ofstream(sweep / "long_token.profile") << "outer\n0 0\n" << std::string(2 << 20, '9') << "x 0\n0 1\n";
+            // a 10,000-point circle: lib's check_surface is quadratic on the cap's sliver triangles (1,000 points
+            // 0.9 s CPU, 2,000 3.7 s, 4,000 15 s): kept beside the replayed folder for the disabled ctest
+            // cli_sweep_fine_circle, not in it
+            std::ofstream circle(sweep.parent_path() / "sweep_circle_10000.profile");
+            circle << "outer\n";
+            for (int i = 0; i < 10000; ++i)
+                circle << std::cos(2 * 3.141592653589793 * i / 10000) << ' ' << std::sin(2 * 3.141592653589793 * i / 10000) << '\n';
         }
         std::printf("wrote the generated corpus into %s\n", dir.c_str());
     } catch (const std::exception& e) {
