@@ -7,6 +7,8 @@
 // one point "x y" of the current loop. The outer loop counter-clockwise, holes clockwise (validate_profile checks).
 // Path file (text): '#' comments; a line `closed` makes the path closed; every other non-empty line a point "x y z".
 // Tangents by central differences (polyline_path).
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <iostream>
@@ -44,7 +46,8 @@ std::vector<std::string> read_lines(const std::string& file) {
     const std::string text = read_text_file(file);
     std::vector<std::string> lines;
     std::string cur;
-    for (std::size_t i = 0; i < text.size(); ++i) {
+    // a UTF-8 byte order mark is skipped, as in every reader of lib
+    for (std::size_t i = text.starts_with("\xEF\xBB\xBF") ? 3 : 0; i < text.size(); ++i) {
         const char c = text[i];
         if (c == '\n' || c == '\r') {
             lines.push_back(cur);
@@ -62,6 +65,18 @@ std::string strip(std::string s) {
     const auto a = s.find_first_not_of(" \t"), b = s.find_last_not_of(" \t");
     return a == std::string::npos ? std::string() : s.substr(a, b - a + 1);
 }
+// Keywords (outer, hole, closed) in any case, as in every reader of lib.
+bool is_keyword(const std::string& s, const char* word) {
+    const std::string w = word;
+    return s.size() == w.size() &&
+           std::equal(s.begin(), s.end(), w.begin(), [](char a, char b) { return std::tolower(static_cast<unsigned char>(a)) == b; });
+}
+// A token for a message: quoted, at most 40 bytes, unprintable bytes shown as '?'.
+std::string token_quote(const std::string& t) {
+    std::string q = "'";
+    for (char c : t.substr(0, 40)) q += (c >= 32 && c < 127) ? c : '?';
+    return q + (t.size() > 40 ? "...'" : "'");
+}
 [[noreturn]] void parse_error(const std::string& file, std::size_t line, const std::string& why) {
     throw IoError(file, line, why);
 }
@@ -78,8 +93,8 @@ std::vector<double> numbers(const std::string& s, int n, const std::string& file
         } catch (const std::exception&) {
             used = 0;
         }
-        if (used != tok.size()) parse_error(file, line, "'" + tok + "' is not a number");
-        if (!std::isfinite(x)) parse_error(file, line, "'" + tok + "' is not finite");
+        if (used != tok.size()) parse_error(file, line, token_quote(tok) + " is not a number");
+        if (!std::isfinite(x)) parse_error(file, line, token_quote(tok) + " is not finite");
         v.push_back(x);
     }
     if (static_cast<int>(v.size()) != n)
@@ -95,11 +110,11 @@ sweeps::Profile read_profile(const std::string& file) {
     for (std::size_t i = 0; i < lines.size(); ++i) {
         const std::string s = strip(lines[i]);
         if (s.empty()) continue;
-        if (s == "outer") {
+        if (is_keyword(s, "outer")) {
             if (have_outer) parse_error(file, i + 1, "a second 'outer' loop (one outer loop, then holes)");
             have_outer = true;
             cur = &p.outer;
-        } else if (s == "hole") {
+        } else if (is_keyword(s, "hole")) {
             if (!have_outer) parse_error(file, i + 1, "'hole' before the 'outer' loop");
             p.holes.emplace_back();
             cur = &p.holes.back();
@@ -125,7 +140,7 @@ sweeps::Path read_path(const std::string& file) {
     for (std::size_t i = 0; i < lines.size(); ++i) {
         const std::string s = strip(lines[i]);
         if (s.empty()) continue;
-        if (s == "closed") {
+        if (is_keyword(s, "closed")) {
             closed = true;
             continue;
         }

@@ -374,22 +374,40 @@ Tree from_scad(const scad::Scene& s) {
                               : n.kind == scad::Kind::intersection ? Op::intersect
                                                                     : Op::subtract;
                 if (n.children.empty()) throw std::invalid_argument("from_scad: a boolean without children");
-                int acc = -1;
+                std::vector<int> kids;
                 for (int c : n.children) {
                     if (c < 0 || std::size_t(c) >= i || at[c] < 0)
                         throw std::invalid_argument("from_scad: node " + std::to_string(i) + " has a bad child");
-                    if (acc < 0) {
-                        acc = at[c];
-                        continue;
-                    }
-                    Node d;
-                    d.op = op;
-                    d.a = acc;
-                    d.b = at[c];
-                    t.nodes.push_back(d);
-                    acc = int(t.nodes.size()) - 1;
+                    kids.push_back(at[c]);
                 }
-                at[i] = acc;
+                // Balanced, not a chain: a union of 100,000 spheres made a tree 100,000 deep, and the recursive
+                // walks (bounds, hits) overflowed the stack. a − b − c − ... = a − (b ∪ c ∪ ...).
+                auto combine = [&](Op o, std::vector<int> list) {
+                    while (list.size() > 1) {
+                        std::vector<int> next;
+                        for (std::size_t k = 0; k + 1 < list.size(); k += 2) {
+                            Node d;
+                            d.op = o;
+                            d.a = list[k];
+                            d.b = list[k + 1];
+                            t.nodes.push_back(d);
+                            next.push_back(int(t.nodes.size()) - 1);
+                        }
+                        if (list.size() % 2 == 1) next.push_back(list.back());
+                        list = std::move(next);
+                    }
+                    return list[0];
+                };
+                if (op != Op::subtract || kids.size() == 1) {
+                    at[i] = combine(op, kids);
+                } else {
+                    Node d;
+                    d.op = Op::subtract;
+                    d.a = kids[0];
+                    d.b = combine(Op::unite, std::vector<int>(kids.begin() + 1, kids.end()));
+                    t.nodes.push_back(d);
+                    at[i] = int(t.nodes.size()) - 1;
+                }
             }
         }
     }
