@@ -770,9 +770,10 @@ inline void given_vertices(Octree& t) {
 }
 
 // An adaptive Cartesian tree without your simplify (Task 5): bottom-up, a node of level >= min_level whose 8 children
-// are leaves becomes a leaf when Ju et al.'s sign tests pass (its corners form one sheet; every edge midpoint, face
-// centre and the centre has the sign of a corner of its feature), computed here from the samples; its vertex is the
-// mean of the children's vertices (in the cell), or none when they have none. After given_vertices.
+// are leaves becomes a leaf when every child's corners form one sheet and Ju et al.'s sign tests pass (its corners
+// form one sheet; every edge midpoint, face centre and the centre has the sign of a corner of its feature), computed
+// here from the samples; its vertex is the mean of the children's vertices (in the cell), or none when they have
+// none. After given_vertices (the children's signs).
 inline std::size_t given_collapse(Octree& t, int min_level) {
     auto connected = [](int mask) {
         if (mask == 0) return true;
@@ -799,6 +800,12 @@ inline std::size_t given_collapse(Octree& t, int min_level) {
         int mask = 0;
         for (int c = 0; c < 8; ++c) mask |= int(t.value(t.corner(nd, c)) <= 0.0) << c;
         if (!connected(mask) || !connected(~mask & 0xff)) continue;
+        bool children_sheet = true;  // every child's own corners one sheet: one piece each, no ambiguous face
+        for (int c = 0; c < 8; ++c) {
+            const int cs = t.nodes[nd.first_child + c].signs;
+            children_sheet = children_sheet && connected(cs) && connected(~cs & 0xff);
+        }
+        if (!children_sheet) continue;
         bool agree = true;
         for (int i = 0; i < 3 && agree; ++i)
             for (int j = 0; j < 3 && agree; ++j)
@@ -838,12 +845,17 @@ inline std::size_t given_collapse(Octree& t, int min_level) {
 // For every sign-changing minimal edge (no leaf around it is smaller than the leaf it was found in), the leaves in
 // the 4 quadrants around it (locate at the edge's midpoint +- half a finest cell along the other two axes; (b, c) =
 // (a + 1, a + 2) mod 3, quadrants (-,-), (+,-), (+,+), (-,+)), in that order when the edge's lower end is inside and
-// reversed otherwise, repeats dropped; a triangle, or a quad split along its shorter diagonal (equal diagonals:
-// either split). Spherical trees: radial edges on the polar axis give pole rings instead, edges on the inner sphere
-// are skipped. Slow and simple: for checking contour's output exactly.
+// reversed otherwise, repeats dropped; from each leaf the vertex of the piece crossing the edge (a leaf with several
+// vertices: the one whose DualVertex::edges holds a cell edge of the leaf with the edge's two ends); a triangle, or a
+// quad split along the diagonal whose two triangles both face the edge's outward direction when only one does (the
+// chord from the edge's lower to its upper lattice end, negated when the lower end is outside), else along its
+// shorter diagonal (equal diagonals: either split). Spherical trees: radial edges on the polar axis give pole rings
+// instead (each leaf the piece crossing the axis edge), edges on the inner sphere are skipped. Not for spherical
+// trees of level 1 (their quads at phi = 0 and pi join the same 4 vertices; the contract splits them apart). Slow
+// and simple: for checking contour's output exactly.
 struct ReferenceContour {
     using Tri = std::array<glm::dvec3, 3>;
-    std::vector<Tri> triangles;                         // from triangles and quads with a shorter diagonal
+    std::vector<Tri> triangles;                         // from triangles and quads with a decided diagonal
     std::vector<std::array<glm::dvec3, 4>> tie_quads;   // quads whose diagonals are equally long
     struct Ring {
         bool north = true;
@@ -861,14 +873,26 @@ inline ReferenceContour reference_contour(const Octree& t) {
     const std::int32_t n = t.resolution();
     const int qb[4] = {-1, +1, +1, -1}, qc[4] = {-1, -1, +1, +1};
     std::set<std::array<int, 6>> seen;  // edges by their canonical ends
-    auto position = [&](std::uint32_t leaf, const glm::ivec3& q0, int a) -> std::optional<glm::dvec3> {
+    // the vertex of `leaf` for the piece crossing the edge from q0 to q1 (along axis a)
+    auto position = [&](std::uint32_t leaf, const glm::ivec3& q0, const glm::ivec3& q1, int a) -> std::optional<glm::dvec3> {
         const OctreeNode& nd = t.nodes[leaf];
-        if (nd.vertex != invalid_index && nd.vertex < t.vertices.size()) return t.vertices[nd.vertex].position;
+        if (nd.vertex != invalid_index && nd.vertex < t.vertices.size()) {
+            const std::size_t n_pieces = t.vertices[nd.vertex].pieces;
+            if (n_pieces <= 1) return t.vertices[nd.vertex].position;
+            const glm::ivec3 k0 = t.canonical(q0), k1 = t.canonical(q1);
+            for (std::size_t k = 0; k < n_pieces && nd.vertex + k < t.vertices.size(); ++k)
+                for (int e = 0; e < 12; ++e)
+                    if ((t.vertices[nd.vertex + k].edges >> e) & 1 &&
+                        t.canonical(t.corner(nd, cell_edge_corners[e][0])) == k0 &&
+                        t.canonical(t.corner(nd, cell_edge_corners[e][1])) == k1)
+                        return t.vertices[nd.vertex + k].position;
+        }
         if (out.no_vertex.empty())
             out.no_vertex = "leaf " + std::to_string(leaf) + " (level " + std::to_string(int(nd.level)) + ", cell " +
                             std::to_string(nd.x) + ", " + std::to_string(nd.y) + ", " + std::to_string(nd.z) +
                             ") around the sign-changing edge from lattice point (" + std::to_string(q0.x) + ", " +
-                            std::to_string(q0.y) + ", " + std::to_string(q0.z) + ") along axis " + std::to_string(a);
+                            std::to_string(q0.y) + ", " + std::to_string(q0.z) + ") along axis " + std::to_string(a) +
+                            (nd.vertex == invalid_index ? ": no vertex" : ": no vertex whose piece crosses the edge");
         return std::nullopt;
     };
     for (std::uint32_t li : tree_shape(t).leaves) {
@@ -911,18 +935,23 @@ inline ReferenceContour reference_contour(const Octree& t) {
                 if (poly.size() < 3) continue;
                 std::vector<glm::dvec3> P;
                 for (std::uint32_t l : poly)
-                    if (auto p = position(l, q0, a)) P.push_back(*p);
+                    if (auto p = position(l, q0, q1, a)) P.push_back(*p);
                 if (P.size() != poly.size()) continue;
                 ++out.edges;
                 if (P.size() == 3) {
                     out.triangles.push_back({P[0], P[1], P[2]});
                     continue;
                 }
+                const glm::dvec3 outward = (in0 ? 1.0 : -1.0) * (t.lattice_point(q1) - t.lattice_point(q0));
+                auto faces_out = [&](int i, int j, int k) {
+                    return glm::dot(glm::cross(P[j] - P[i], P[k] - P[i]), outward) > 0.0;
+                };
+                const bool out02 = faces_out(0, 1, 2) && faces_out(0, 2, 3), out13 = faces_out(0, 1, 3) && faces_out(1, 2, 3);
                 const double d02 = glm::dot(P[2] - P[0], P[2] - P[0]), d13 = glm::dot(P[3] - P[1], P[3] - P[1]);
-                if (d02 < d13 * (1.0 - 1e-12)) {
+                if (out02 != out13 ? out02 : d02 < d13 * (1.0 - 1e-12)) {
                     out.triangles.push_back({P[0], P[1], P[2]});
                     out.triangles.push_back({P[0], P[2], P[3]});
-                } else if (d13 < d02 * (1.0 - 1e-12)) {
+                } else if (out02 != out13 || d13 < d02 * (1.0 - 1e-12)) {
                     out.triangles.push_back({P[0], P[1], P[3]});
                     out.triangles.push_back({P[1], P[2], P[3]});
                 } else {
@@ -953,7 +982,7 @@ inline ReferenceContour reference_contour(const Octree& t) {
             r.r_lo = t.lattice_spherical(q0).r;
             r.r_hi = t.lattice_spherical(q1).r;
             for (std::uint32_t l : ring)
-                if (auto p = position(l, q0, 0)) r.ring.push_back(*p);
+                if (auto p = position(l, q0, q1, 0)) r.ring.push_back(*p);
             out.rings.push_back(std::move(r));
         }
     }
@@ -1013,7 +1042,7 @@ inline std::string compare_polygons(const PolygonSoup& s, const ReferenceContour
         for (int i = 0; i < count; ++i)
             if (extra++ < 2) first << "\n  unexpected triangle " << show(k);
     if (!missing && !extra && !bad) return "";
-    os << missing << " expected triangles missing (or wound the other way, or split along the longer diagonal), "
+    os << missing << " expected triangles missing (or wound the other way, split along the other diagonal, or from another piece's vertex), "
        << extra << " unexpected triangles; expected " << ref.triangles.size() + 2 * ref.tie_quads.size()
        << " triangles from " << ref.edges << " sign-changing minimal edges, got " << s.n_faces() << first.str();
     return os.str();

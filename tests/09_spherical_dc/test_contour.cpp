@@ -301,7 +301,8 @@ TEST_CASE("simplify: tolerance 0 merges only exact fits; a box with faces on coa
 
 TEST_CASE("simplify: the sign tests decide each of the 256 corner configurations (also with a stray point)" *
           geolab::points(1) *
-          geolab::hint("Test (1): the inside corners are connected through cube edges, and so are the outside ones "
+          geolab::hint("Test (0): every child's own corner signs form one sheet (one piece, no ambiguous face). "
+                       "Test (1): the inside corners are connected through cube edges, and so are the outside ones "
                        "(both, for every one of the 256 configurations). Test (2): each of the 19 sub-lattice points "
                        "that is not a corner (edge midpoints, face centres, the centre) has the sign of at least one "
                        "corner of its edge, face or cell. Read the 27 signs from the children's OctreeNode::signs. "
@@ -389,6 +390,7 @@ TEST_CASE("simplify: the sign tests decide each of the 256 corner configurations
             t.init_cartesian(*dummy, 1, lo, 2.0);
             const std::uint32_t first_child = t.split(0);
             int vertices = 0;
+            bool children_sheet = true;  // test (0): every child's own corners form one sheet
             for (int child = 0; child < 8; ++child) {
                 OctreeNode& ch = t.nodes[first_child + child];
                 int signs = 0;
@@ -398,6 +400,7 @@ TEST_CASE("simplify: the sign tests decide each of the 256 corner configurations
                     signs |= int((in >> (q.x + 3 * q.y + 9 * q.z)) & 1u) << c;
                 }
                 ch.signs = std::uint8_t(signs);
+                children_sheet = children_sheet && connected(signs) && connected(~signs & 0xff);
                 ch.vertex = invalid_index;
                 if (signs == 0 || signs == 0xff) continue;
                 ch.vertex = std::uint32_t(t.vertices.size());
@@ -413,7 +416,7 @@ TEST_CASE("simplify: the sign tests decide each of the 256 corner configurations
                 if (!(on ? (m & fc) : (~m & fc))) agree = false;
             }
             const bool sheet = connected(m) && connected(~m & 0xff);
-            const bool collapse = sheet && agree && (vertices == 0 || (m != 0 && m != 0xff));
+            const bool collapse = children_sheet && sheet && agree && (vertices == 0 || (m != 0 && m != 0xff));
             const std::size_t collapses = simplify(t, 1e-6, 0.01);  // Q = 0 up to rounding
             ++cases;
             const OctreeNode& root = t.nodes[0];
@@ -430,7 +433,8 @@ TEST_CASE("simplify: the sign tests decide each of the 256 corner configurations
                       << std::bitset<27>(in) << " (bit i + 3j + 9k)";
                 if (stray >= 0) first << " with point " << stray << " on neither side of its feature's corners";
                 first << ": one sheet " << (sheet ? "yes" : "no") << ", every point agrees with a corner of its "
-                      << "feature " << (agree ? "yes" : "no") << "; expected " << (collapse ? "a collapse" : "no collapse")
+                      << "feature " << (agree ? "yes" : "no") << ", every child's corners one sheet "
+                      << (children_sheet ? "yes" : "no") << "; expected " << (collapse ? "a collapse" : "no collapse")
                       << ", got " << collapses << " collapses, root " << (root.is_leaf() ? "a leaf" : "not a leaf");
                 if (root.is_leaf())
                     first << " with signs " << std::bitset<8>(root.signs) << ", vertex "
