@@ -1,5 +1,5 @@
 #pragma once
-// Lab 09 test helpers for the manifold checks (handout §5.1): lib's check_surface (non-manifold vertices, exact
+// Lab 09 test helpers for the manifold checks (handout §1.1): lib's check_surface (non-manifold vertices, exact
 // self-intersections), the expected vertex layout of a leaf, and fields whose finest cells hold two surface pieces.
 #include <bit>
 #include <cmath>

@@ -1,4 +1,4 @@
-// Lab 09: manifold dual contouring (handout §5.1): a vertex per piece of a finest cell's surface, polygons that take
+// Lab 09: manifold dual contouring (handout §1.1): a vertex per piece of a finest cell's surface, polygons that take
 // the piece crossing their edge, the diagonal of each quad, and closed 2-manifolds on real models.
 #include "manifold.hpp"
 
@@ -22,7 +22,7 @@ TEST_CASE("place_vertices: a finest leaf gets one vertex per piece of its surfac
           geolab::points(2) *
           geolab::hint("cell_surface(signs, face_joins(tree, leaf)) gives the pieces of a finest leaf: one vertex per "
                        "piece, consecutive from OctreeNode::vertex, vertex k with the edges of piece k and pieces = the "
-                       "count; its QEF holds the crossings of its own piece's edges only. Handout §5.1.")) {
+                       "count; its QEF holds the crossings of its own piece's edges only. Handout §1.1.")) {
     const DiagonalBalls balls(5, {16, 16, 16}, 0.4, 0.2);
     const LatticeBlock cavities = two_cavities();
     const std::pair<const ScalarField*, const char*> cases[] = {
@@ -54,7 +54,7 @@ TEST_CASE("place_vertices: a finest leaf gets one vertex per piece of its surfac
 
 TEST_CASE("place_vertices: the two pieces of a cell between two balls stay on their own balls" * geolab::points(1) *
           geolab::hint("A piece's QEF holds only the crossings on its own edges, so its vertex lies on its own "
-                       "surface; one QEF for the whole cell would put a vertex between the balls. Handout §5.1.")) {
+                       "surface; one QEF for the whole cell would put a vertex between the balls. Handout §1.1.")) {
     const DiagonalBalls f(5, {16, 16, 16}, 0.4, 0.2);
     Octree t = given_octree(f, 5);
     place_vertices(t, {});
@@ -84,7 +84,7 @@ TEST_SUITE("Task 5: simplification") {
 TEST_CASE("simplify: a cell with two pieces never merges: two nearly touching balls stay two closed surfaces" *
           geolab::points(1) *
           geolab::hint("Merge only when every child's own corner signs form a single sheet (one piece, no ambiguous "
-                       "face) besides Ju et al.'s tests: one vertex for the parent would join the balls. Handout §5.2.")) {
+                       "face) besides Ju et al.'s tests: one vertex for the parent would join the balls. Handout §1.1.")) {
     const DiagonalBalls f(5, {16, 16, 16}, 0.4, 0.2);
     for (double tol : {0.05, 1e6}) {
         Octree t;
@@ -104,7 +104,7 @@ TEST_SUITE("Task 6: contouring polygons") {
 TEST_CASE("contour: two balls closer than a cell: each polygon takes the piece that crosses its edge" *
           geolab::points(2) *
           geolab::hint("In a leaf with several vertices use the one whose DualVertex::edges holds the polygon's edge "
-                       "(its number as the leaf's own cell edge); a leaf with one vertex gives it. Handout §5.1.")) {
+                       "(its number as the leaf's own cell edge); a leaf with one vertex gives it. Handout §1.1.")) {
     for (double gap : {0.2, 0.6}) {
         const DiagonalBalls f(5, {16, 16, 16}, 0.4, gap);
         Octree t;
@@ -123,7 +123,7 @@ TEST_CASE("contour: two balls closer than a cell: each polygon takes the piece t
 
 TEST_CASE("contour: an ambiguous face joined by face_joins leaves two separate cavities" * geolab::points(1) *
           geolab::hint("The given vertices follow cell_surface(signs, face_joins): a leaf at the joined face has two "
-                       "pieces, and each polygon must take the one that crosses its edge. Handout §5.1.")) {
+                       "pieces, and each polygon must take the one that crosses its edge. Handout §1.1.")) {
     const LatticeBlock f = two_cavities();
     Octree t;
     const PolygonSoup s = given_contour(f, 3, t);
@@ -145,7 +145,7 @@ TEST_CASE("contour: a quad is split along the diagonal whose triangles face outw
           geolab::points(1) *
           geolab::hint("Split a quad (a, b, c, d) along a-c or b-d: when only one choice gives two triangles whose "
                        "normals point along the edge's outward direction (from its inside end to its outside end), "
-                       "take it, the other folds the mesh; otherwise take the shorter diagonal. Handout §5.3.")) {
+                       "take it, the other folds the mesh; otherwise take the shorter diagonal. Handout §1.1.")) {
     // one inside lattice point P = (2, 2, 2) of a complete level-2 tree: the edge from P along +x (outward +x) has
     // the cells (2, 1, 1), (2, 2, 1), (2, 2, 2), (2, 1, 2) around it, counter-clockwise seen from +x
     const TinySphere probe(glm::dvec3(0.0), 1.0);
@@ -219,7 +219,7 @@ TEST_SUITE("Task 7: Cartesian one-shot") {
 TEST_CASE("dual_contour_cartesian: cow and armadillo at level 5 are closed 2-manifolds without self-intersections" *
           geolab::points(2) * geolab::time_limit(60) *
           geolab::hint("Thin legs and ears put two sheets of the surface in one finest cell: one vertex per piece "
-                       "keeps them apart (handout §5.1); the QEF minimiser outside the cell gives way to the mass "
+                       "keeps them apart (handout §1.1); the QEF minimiser outside the cell gives way to the mass "
                        "point, and each quad takes the diagonal that does not fold.")) {
     for (const char* name : {"cow", "armadillo"}) {
         const PolygonSoup input = load_model(name);
@@ -240,7 +240,7 @@ TEST_CASE("dual_contour_spherical: cow and armadillo at level 5 are closed 2-man
           geolab::time_limit(60) *
           geolab::hint("The spherical cells are cubes of the (r, theta, phi) lattice: the same pieces, face_joins "
                        "and polygons as on the Cartesian tree, across the phi seam; each pole ring takes the piece "
-                       "that crosses the axis edge. Handout §5.1, §7.")) {
+                       "that crosses the axis edge. Handout §1.1, §7.")) {
     for (const char* name : {"cow", "armadillo"}) {
         const PolygonSoup input = load_model(name);
         const geolab::MeshField f(input);

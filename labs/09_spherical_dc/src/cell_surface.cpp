@@ -1,5 +1,5 @@
 // Lab 09 — the surface pieces of a cell and the rule for ambiguous faces (given: the tasks use them, they are not
-// tasks). Handout §5.1.
+// tasks). Handout §1.1.
 #include <cstdint>
 
 #include "geolab/dual_contouring.hpp"

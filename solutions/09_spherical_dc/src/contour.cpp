@@ -288,7 +288,7 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params) {
     // The vertex of a piece in the cell with corners q0 (lowest) and q7 (highest): the QEF's minimiser when it lies in
     // the cell, else the mass point (the mean of the piece's crossings), clamped into the cell. Clamping the minimiser
     // instead would pile vertices onto the cell's faces and corners, two pieces of one cell onto the same point,
-    // and fold the mesh there (handout §5.1).
+    // and fold the mesh there (handout §1.1).
     auto cell_vertex = [&](const Qef& qef, glm::ivec3 q0, glm::ivec3 q7) {
         glm::dvec3 mass;
         const glm::dvec3 x = qef.solve(params.tau, &mass);

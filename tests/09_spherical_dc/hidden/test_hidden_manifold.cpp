@@ -1,4 +1,4 @@
-// Lab 09, hidden: manifold dual contouring on real models and spherical trees (handout §5.1).
+// Lab 09, hidden: manifold dual contouring on real models and spherical trees (handout §1.1).
 #include "../manifold.hpp"
 
 using namespace lab09;

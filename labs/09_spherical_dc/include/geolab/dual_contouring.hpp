@@ -190,7 +190,7 @@ static_assert(sizeof(OctreeNode) == 16, "an octree node is 16 bytes: 16-bit cell
 
 //! A dual vertex: its position, the QEF it minimises (kept for simplification and for tests), and which piece of
 //! its leaf's surface it stands for.
-//! Layout (handout §5.1): a leaf's vertices are consecutive, tree.vertices[nd.vertex + k] for k = 0 .. pieces − 1
+//! Layout (handout §1.1): a leaf's vertices are consecutive, tree.vertices[nd.vertex + k] for k = 0 .. pieces − 1
 //! (OctreeNode::vertex is the first); every one of them holds the same `pieces`. A finest leaf has one vertex per
 //! piece of cell_surface(signs, face_joins(tree, leaf)), in that order; any other leaf has one vertex (pieces = 1)
 //! holding all its sign-changing edges.
@@ -543,7 +543,7 @@ private:
 };
 
 // =====================================================================================================================
-// The surface pieces of a cell (given: the tasks use them; handout §5.1)
+// The surface pieces of a cell (given: the tasks use them; handout §1.1)
 // =====================================================================================================================
 
 //! Cell edge e joins corners cell_edge_corners[e][0] (its lower end) and [1]: edges 0–3 run along x (r), 4–7 along
@@ -574,12 +574,12 @@ struct CellSurface {
 CellSurface cell_surface(std::uint8_t signs, std::uint8_t joins = 0);
 
 //! How the ambiguous faces of finest leaf `leaf` are drawn (bit f: join the inside corners of face f). The rule,
-//! which makes the dual mesh a 2-manifold (handout §5.1): the two inside corners p, q of an ambiguous face are
+//! which makes the dual mesh a 2-manifold (handout §1.1): the two inside corners p, q of an ambiguous face are
 //! joined exactly when they are connected through inside corners by cell edges in BOTH finest cells that share the
 //! face — in a cell, when the two corners next to p and q on the far face are inside and so is a third corner of
 //! the far face. Computed from the lattice samples alone (tree.value at the far faces' corners, φ wrapping), so
 //! both cells that share a face draw it alike; a face with no cell beyond (the domain's boundary) counts as not
-//! connected there. 0 for leaves coarser than the finest level (they get one vertex; handout §5.1).
+//! connected there. 0 for leaves coarser than the finest level (they get one vertex; handout §1.1).
 std::uint8_t face_joins(const Octree& tree, const OctreeNode& leaf);
 
 // =====================================================================================================================
