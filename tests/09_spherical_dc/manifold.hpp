@@ -1,6 +1,8 @@
 #pragma once
 // Lab 09 test helpers for the manifold checks (handout §1.1): lib's check_surface (non-manifold vertices, exact
 // self-intersections), the expected vertex layout of a leaf, and fields whose finest cells hold two surface pieces.
+#include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <sstream>
@@ -50,9 +52,23 @@ inline CellSurface expected_pieces(const Octree& t, const OctreeNode& nd) {
     return one;
 }
 
+// The crossings a piece with cell edges `edges` of leaf nd has: its edges counted once per distinct pair of canonical
+// ends (the radial edge on the polar axis is two cell edges of a spherical cell there, one crossing).
+inline int distinct_crossings(const Octree& t, const OctreeNode& nd, std::uint16_t edges) {
+    std::vector<std::array<int, 6>> seen;
+    for (int e = 0; e < 12; ++e) {
+        if (!((edges >> e) & 1)) continue;
+        const glm::ivec3 k0 = t.canonical(t.corner(nd, cell_edge_corners[e][0])),
+                         k1 = t.canonical(t.corner(nd, cell_edge_corners[e][1]));
+        const std::array<int, 6> key{k0.x, k0.y, k0.z, k1.x, k1.y, k1.z};
+        if (std::find(seen.begin(), seen.end(), key) == seen.end()) seen.push_back(key);
+    }
+    return int(seen.size());
+}
+
 // Leaves whose vertices do not follow DualVertex's layout for expected_pieces (count, order, edges, pieces, index
-// range); when `qef_counts`, also a vertex whose Qef does not hold one plane per crossing of its piece (Cartesian:
-// every edge its own crossing). The first few described in `first`.
+// range); when `qef_counts`, also a vertex whose Qef does not hold one plane per crossing of its piece (each
+// sign-changing edge once: distinct_crossings). The first few described in `first`.
 inline std::size_t wrong_layouts(const Octree& t, std::ostringstream& first, bool qef_counts) {
     std::size_t wrong = 0;
     for (std::uint32_t li : tree_shape(t).leaves) {
@@ -74,9 +90,9 @@ inline std::size_t wrong_layouts(const Octree& t, std::ostringstream& first, boo
                 else if (v.edges != want.edges[k])
                     why << "vertex " << k << " has edges 0x" << std::hex << v.edges << ", piece " << std::dec << k
                         << " of cell_surface crosses 0x" << std::hex << want.edges[k] << std::dec;
-                else if (qef_counts && v.qef.count != std::popcount(unsigned(want.edges[k])))
+                else if (qef_counts && v.qef.count != distinct_crossings(t, nd, want.edges[k]))
                     why << "vertex " << k << " has " << v.qef.count << " QEF planes for "
-                        << std::popcount(unsigned(want.edges[k])) << " crossed edges";
+                        << distinct_crossings(t, nd, want.edges[k]) << " crossed edges";
             }
         }
         if (!why.str().empty() && wrong++ < 3)
@@ -132,12 +148,12 @@ public:
 
 // The trilinear interpolant of values given at the lattice points of the Cartesian octree of `level` over
 // bounds() = [-1, 1]^3 (padding 0.05): -1 inside the block [lo, hi]^3 of lattice points, +1 elsewhere, except the
-// `holes` (lattice points set to +1). Its samples at the octree's lattice points are exactly these values.
+// `holes` (lattice points set to +1) and the `islands` (set to -1). Its samples at the octree's lattice points are exactly these values.
 // lipschitz() == 0: the given octree is then complete.
 class LatticeBlock final : public ScalarField {
 public:
-    LatticeBlock(int level, int lo, int hi, std::vector<glm::ivec3> holes)
-        : n_(1 << level), lo_(lo), hi_(hi), holes_(std::move(holes)) {}
+    LatticeBlock(int level, int lo, int hi, std::vector<glm::ivec3> holes, std::vector<glm::ivec3> islands = {})
+        : n_(1 << level), lo_(lo), hi_(hi), holes_(std::move(holes)), islands_(std::move(islands)) {}
     double value(const glm::dvec3& p) const override {
         glm::dvec3 t;
         const glm::ivec3 q = cell_of(p, t);
@@ -169,6 +185,8 @@ public:
     double at(glm::ivec3 q) const {
         for (const glm::ivec3& hole : holes_)
             if (q == hole) return 1.0;
+        for (const glm::ivec3& island : islands_)
+            if (q == island) return -1.0;
         const bool in = q.x >= lo_ && q.y >= lo_ && q.z >= lo_ && q.x <= hi_ && q.y <= hi_ && q.z <= hi_;
         return in ? -1.0 : 1.0;
     }
@@ -187,12 +205,64 @@ private:
         return q;
     }
     int n_, lo_, hi_;
-    std::vector<glm::ivec3> holes_;
+    std::vector<glm::ivec3> holes_, islands_;
 };
 
 // The lattice block [2, 6]^3 at level 3 with two outside points on one diagonal of the face z = 4 of the cells
 // (3, 3, 3) and (3, 3, 4): the face's two inside corners (3, 3, 4), (4, 4, 4) are connected through inside points
 // on both sides, so face_joins joins them and each outside point is a cavity of its own.
 inline LatticeBlock two_cavities() { return LatticeBlock(3, 2, 6, {{4, 3, 4}, {3, 4, 4}}); }
+// The same across a face normal to x (x = 4) and to y (y = 4).
+inline LatticeBlock two_cavities_x() { return LatticeBlock(3, 2, 6, {{4, 4, 3}, {4, 3, 4}}); }
+inline LatticeBlock two_cavities_y() { return LatticeBlock(3, 2, 6, {{4, 4, 3}, {3, 4, 4}}); }
+// Four inside lattice points, no two on one cell edge, at corners 0, 3, 5 and 6 of the level-3 cell (3, 3, 3): that
+// cell's surface has 4 pieces (each corner cut off; every face is ambiguous and none is joined).
+inline LatticeBlock four_pieces() { return LatticeBlock(3, 1, 0, {}, {{3, 3, 3}, {4, 4, 3}, {4, 3, 4}, {3, 4, 4}}); }
+
+// A field on the spherical lattice of a tree of `level` about the origin, shell [0, r_max]: the trilinear interpolant
+// in (r, theta, phi) lattice units of -1 at the `inside` lattice points (i, j, k) (j = 0 or 2^level: a point on the
+// polar axis, whatever k) and +1 elsewhere. Its samples at the tree's lattice points are exactly these values.
+class SphericalLatticePoints final : public ScalarField {
+public:
+    SphericalLatticePoints(int level, double r_max, std::vector<glm::ivec3> inside)
+        : n_(1 << level), r_max_(r_max), inside_(std::move(inside)) {}
+    double value(const glm::dvec3& p) const override {
+        const double r = glm::length(p);
+        const double theta = r > 0 ? std::acos(std::clamp(p.z / r, -1.0, 1.0)) : 0.0;
+        double phi = std::atan2(p.y, p.x);
+        if (phi < 0) phi += 2 * kPi;
+        const double u[3] = {r / r_max_ * n_, theta / kPi * n_, phi / (2 * kPi) * n_};
+        glm::ivec3 q;
+        double t[3];
+        for (int a = 0; a < 3; ++a) {
+            double x = u[a];
+            if (std::abs(x - std::round(x)) < 1e-9) x = std::round(x);
+            q[a] = std::clamp(int(std::floor(x)), 0, n_ - 1);
+            t[a] = std::clamp(x - q[a], 0.0, 1.0);
+        }
+        double v = 0.0;
+        for (int c = 0; c < 8; ++c) {
+            const glm::ivec3 d(c & 1, (c >> 1) & 1, c >> 2);
+            double w = 1.0;
+            for (int a = 0; a < 3; ++a) w *= d[a] ? t[a] : 1.0 - t[a];
+            v += w * at(q + d);
+        }
+        return v;
+    }
+    Box bounds() const override { return {glm::dvec3(-r_max_), glm::dvec3(r_max_)}; }
+    double at(glm::ivec3 q) const {
+        q.z %= n_;
+        for (const glm::ivec3& in : inside_) {
+            const bool axis = in.y == 0 || in.y == n_;
+            if (q.x == in.x && q.y == in.y && (axis || q.z == in.z % n_)) return -1.0;
+        }
+        return 1.0;
+    }
+
+private:
+    int n_;
+    double r_max_;
+    std::vector<glm::ivec3> inside_;
+};
 
 }  // namespace lab09

@@ -562,9 +562,10 @@ TEST_CASE("contour: exactly the contract's triangles on uniform and adaptive Car
           geolab::points(1) *
           geolab::hint("For every sign-changing minimal edge: the leaves in the quadrants (-,-), (+,-), (+,+), (-,+) "
                        "of the other two axes (b, c) = (a+1, a+2) mod 3, in that order when the edge's lower end is "
-                       "inside, reversed otherwise; repeated leaves dropped (a triangle); a quad split along its "
-                       "SHORTER diagonal. Adaptive trees: an edge is minimal when no leaf around it is smaller; emit it "
-                       "once. Handout §5.3.")) {
+                       "inside, reversed otherwise; repeated leaves dropped (a triangle); from a leaf with several "
+                       "vertices the one whose edges hold the edge; a quad split along the diagonal whose triangles "
+                       "both face outward when only one does, else the SHORTER one. Adaptive trees: an edge is minimal "
+                       "when no leaf around it is smaller; emit it once. Handout §5.3 and §1.1.")) {
     struct Case {
         FieldPtr f;
         int level, collapse_from;  // collapse_from > level: no collapse (a uniform band of finest leaves)

@@ -1,5 +1,7 @@
 // Lab 09: manifold dual contouring (handout §1.1): a vertex per piece of a finest cell's surface, polygons that take
 // the piece crossing their edge, the diagonal of each quad, and closed 2-manifolds on real models.
+#include <set>
+
 #include "manifold.hpp"
 
 using namespace lab09;
@@ -14,6 +16,48 @@ PolygonSoup given_contour(const ScalarField& f, int level, Octree& t) {
     given_vertices(t);
     return contour(t);
 }
+
+// A Cartesian tree of `level` over f's domain (padding 0.05), complete to level `coarse` and split to `level` only in
+// the half x < the middle: leaves of level `coarse` on the other half (the given Octree API only).
+Octree half_refined_cartesian(const ScalarField& f, int level, int coarse) {
+    const auto [lo, side] = cartesian_domain(f, 0.05);
+    Octree t;
+    t.init_cartesian(f, level, lo, side);
+    for (std::uint32_t n = 0; n < t.nodes.size(); ++n) {
+        const OctreeNode nd = t.nodes[n];
+        if (nd.level >= level) continue;
+        const bool low_half = (std::int32_t(nd.x) + 1) * t.cell_span(nd.level) <= t.resolution() / 2;
+        if (nd.level < coarse || low_half) t.split(n);
+    }
+    return t;
+}
+
+// A spherical tree of `level` about the origin, shell [0, r_max], complete to level `coarse` and split to `level`
+// only where phi < pi: leaves of level `coarse` (also around the polar axis) where phi >= pi.
+Octree half_refined_spherical(const ScalarField& f, int level, int coarse, double r_max) {
+    Octree t;
+    t.init_spherical(f, level, glm::dvec3(0.0), 0.0, r_max);
+    for (std::uint32_t n = 0; n < t.nodes.size(); ++n) {
+        const OctreeNode nd = t.nodes[n];
+        if (nd.level >= level) continue;
+        const bool low_half = (std::int32_t(nd.z) + 1) * t.cell_span(nd.level) <= t.resolution() / 2;
+        if (nd.level < coarse || low_half) t.split(n);
+    }
+    return t;
+}
+
+// Leaves coarser than the finest level with a sign change, and those of them whose crossings are fewer than their
+// sign-changing cell edges (the polar axis edge, twice a cell edge there).
+std::size_t coarse_cut_leaves(const Octree& t, bool on_axis_only) {
+    std::size_t n = 0;
+    for (std::uint32_t li : tree_shape(t).leaves) {
+        const OctreeNode& nd = t.nodes[li];
+        const CellSurface p = expected_pieces(t, nd);
+        if (nd.level == t.max_level || p.count == 0) continue;
+        if (!on_axis_only || distinct_crossings(t, nd, p.edges[0]) < std::popcount(unsigned(p.edges[0]))) ++n;
+    }
+    return n;
+}
 }  // namespace
 
 TEST_SUITE("Task 4: vertex placement") {
@@ -24,17 +68,27 @@ TEST_CASE("place_vertices: a finest leaf gets one vertex per piece of its surfac
                        "piece, consecutive from OctreeNode::vertex, vertex k with the edges of piece k and pieces = the "
                        "count; its QEF holds the crossings of its own piece's edges only. Handout §1.1.")) {
     const DiagonalBalls balls(5, {16, 16, 16}, 0.4, 0.2);
-    const LatticeBlock cavities = two_cavities();
-    const std::pair<const ScalarField*, const char*> cases[] = {
-        {&balls, "two balls r = 0.4, 0.2 h apart across a cell's diagonal, level 5"},
-        {&cavities, "lattice block [2, 6]^3 with two outside points on a face diagonal, level 3"}};
-    for (const auto& [f, name] : cases) {
-        Octree t = given_octree(*f, f == &balls ? 5 : 3);
+    const LatticeBlock cavities = two_cavities(), cavities_x = two_cavities_x(), cavities_y = two_cavities_y(),
+                       four = four_pieces();
+    struct Case {
+        const ScalarField* f;
+        int level, min_pieces;
+        bool joins;
+        const char* name;
+    };
+    const Case cases[] = {
+        {&balls, 5, 2, false, "two balls r = 0.4, 0.2 h apart across a cell's diagonal, level 5"},
+        {&cavities, 3, 2, true, "lattice block [2, 6]^3 with two outside points on a z-face diagonal, level 3"},
+        {&cavities_x, 3, 2, true, "lattice block [2, 6]^3 with two outside points on an x-face diagonal, level 3"},
+        {&cavities_y, 3, 2, true, "lattice block [2, 6]^3 with two outside points on a y-face diagonal, level 3"},
+        {&four, 3, 4, false, "four inside lattice points at corners 0, 3, 5, 6 of one cell, level 3"}};
+    for (const auto& [f, level, min_pieces, joins, name] : cases) {
+        Octree t = given_octree(*f, level);
         place_vertices(t, {});
-        INFO(name << ": " << leaves_with_pieces(t, 2) << " leaves with 2 or more pieces, " << leaves_with_joins(t)
-                  << " with a joined face");
-        REQUIRE(leaves_with_pieces(t, 2) > 0);
-        if (f == &cavities) REQUIRE(leaves_with_joins(t) > 0);
+        INFO(name << ": " << leaves_with_pieces(t, min_pieces) << " leaves with " << min_pieces << " or more pieces, "
+                  << leaves_with_joins(t) << " with a joined face");
+        REQUIRE(leaves_with_pieces(t, min_pieces) > 0);
+        if (joins) REQUIRE(leaves_with_joins(t) > 0);
         std::ostringstream first;
         const std::size_t wrong = wrong_layouts(t, first, true);
         CHECK_MESSAGE(wrong == 0, wrong << " leaves do not have one vertex per piece as DualVertex's layout says"
@@ -77,6 +131,54 @@ TEST_CASE("place_vertices: the two pieces of a cell between two balls stay on th
     CHECK((glm::length(p0 - f.c1_) < glm::length(p0 - f.c2_)) != (glm::length(p1 - f.c1_) < glm::length(p1 - f.c2_)));
 }
 
+TEST_CASE("place_vertices: a leaf coarser than the finest level gets one vertex for all its crossings" *
+          geolab::points(1) *
+          geolab::hint("Only finest leaves are split into pieces; any other leaf with a sign change has ONE vertex "
+                       "(pieces = 1) whose edges are all its sign-changing cell edges and whose QEF holds each of "
+                       "their crossings once (the radial edge on the polar axis is two cell edges of a spherical cell "
+                       "there: one crossing). Handout §1.1.")) {
+    const FieldPtr sphere = geolab::sphere({0.1, -0.05, 0.08}, 0.6), torus = geolab::torus({0.02, 0.01, -0.03}, 0.55, 0.2);
+    struct Case {
+        Octree t;
+        bool spherical;
+        std::string what;
+    };
+    std::vector<Case> cases;
+    cases.push_back({half_refined_cartesian(*sphere, 5, 2), false, "sphere r = 0.6, Cartesian, levels 2 and 5"});
+    cases.push_back({half_refined_cartesian(*torus, 4, 3), false, "torus, Cartesian, levels 3 and 4"});
+    cases.push_back({half_refined_spherical(*sphere, 4, 2, 1.0), true, "sphere r = 0.6 about the origin's side, "
+                                                                        "spherical, levels 2 (phi >= pi) and 4"});
+    for (Case& cs : cases) {
+        INFO(cs.what << ": " << coarse_cut_leaves(cs.t, false) << " coarse leaves with a sign change, "
+                     << coarse_cut_leaves(cs.t, true) << " of them on the polar axis with its edge crossed");
+        REQUIRE(coarse_cut_leaves(cs.t, false) > 0);
+        if (cs.spherical) REQUIRE(coarse_cut_leaves(cs.t, true) > 0);
+        place_vertices(cs.t, {});
+        std::ostringstream first;
+        const std::size_t wrong = wrong_layouts(cs.t, first, true);
+        CHECK_MESSAGE(wrong == 0, wrong << " leaves do not have the vertices DualVertex's layout says" << first.str());
+        if (cs.spherical) continue;
+        // Cartesian: a coarse leaf's vertex is its QEF's minimiser when that lies in the leaf's box, else the mass point
+        std::size_t checked = 0, wrong_position = 0;
+        std::ostringstream where;
+        for (std::uint32_t li : tree_shape(cs.t).leaves) {
+            const OctreeNode& nd = cs.t.nodes[li];
+            if (nd.level == cs.t.max_level || nd.vertex >= cs.t.vertices.size()) continue;
+            const DualVertex& v = cs.t.vertices[nd.vertex];
+            const Box box = cell_box(cs.t, nd);
+            const glm::dvec3 x = v.qef.solve(0.01);
+            const glm::dvec3 want = box_outside(box, x) == 0.0 ? x : glm::clamp(v.qef.mass_point(), box.lo, box.hi);
+            ++checked;
+            if (glm::length(v.position - want) > 1e-9 * cs.t.size && wrong_position++ < 3)
+                where << "\n  leaf (" << nd.x << ", " << nd.y << ", " << nd.z << ") level " << int(nd.level) << ": vertex "
+                      << str(v.position) << ", expected " << str(want);
+        }
+        CHECK(checked > 0);
+        CHECK_MESSAGE(wrong_position == 0, wrong_position << " coarse leaves' vertices are neither their QEF minimiser "
+                                                             "in the cell nor the clamped mass point" << where.str());
+    }
+}
+
 }  // TEST_SUITE
 
 TEST_SUITE("Task 5: simplification") {
@@ -94,6 +196,25 @@ TEST_CASE("simplify: a cell with two pieces never merges: two nearly touching ba
         const geolab::SurfaceCheck sc = surface_check(s, false);
         CHECK(sc.components == 2);
         CHECK(sc.euler_characteristic == 4);
+    }
+}
+
+TEST_CASE("simplify: a merged leaf has one vertex holding the parent's sign-changing edges (DualVertex's layout)" *
+          geolab::points(1) *
+          geolab::hint("The new leaf's vertex: pieces = 1 and edges = the sign-changing edges of the parent's own "
+                       "cell (from its corner signs), so contour can treat it like any one-vertex leaf. Handout §1.1.")) {
+    for (const char* name : {"csg", "rounded_box", "box"}) {
+        const FieldPtr f = geolab::named_implicit(name);
+        Octree t;
+        cartesian_pipeline(*f, 5, 1e6, &t);  // merge wherever the sign tests allow
+        std::size_t merged = 0;
+        for (std::uint32_t li : tree_shape(t).leaves)
+            merged += t.nodes[li].level < t.max_level && t.nodes[li].vertex != invalid_index;
+        INFO(name << " level 5 simplified at 1e6 h: " << merged << " merged leaves with a vertex");
+        REQUIRE(merged > 0);
+        std::ostringstream first;
+        const std::size_t wrong = wrong_layouts(t, first, false);
+        CHECK_MESSAGE(wrong == 0, wrong << " leaves do not have the vertices DualVertex's layout says" << first.str());
     }
 }
 
@@ -145,7 +266,8 @@ TEST_CASE("contour: a quad is split along the diagonal whose triangles face outw
           geolab::points(1) *
           geolab::hint("Split a quad (a, b, c, d) along a-c or b-d: when only one choice gives two triangles whose "
                        "normals point along the edge's outward direction (from its inside end to its outside end), "
-                       "take it, the other folds the mesh; otherwise take the shorter diagonal. Handout §1.1.")) {
+                       "take it, the other folds the mesh; otherwise take the shorter diagonal (equal: a-c, from the "
+                       "polygon's first vertex). Handout §1.1.")) {
     // one inside lattice point P = (2, 2, 2) of a complete level-2 tree: the edge from P along +x (outward +x) has
     // the cells (2, 1, 1), (2, 2, 1), (2, 2, 2), (2, 1, 2) around it, counter-clockwise seen from +x
     const TinySphere probe(glm::dvec3(0.0), 1.0);
@@ -163,7 +285,9 @@ TEST_CASE("contour: a quad is split along the diagonal whose triangles face outw
         {{{-0.95, -0.95}, {0.1, -0.01}, {0.01, 0.01}, {-0.01, 0.1}}, 0,
          "a far from the edge, c close to it: b-d is shorter but its triangle b c d faces inward"},
         {{{-0.9, -0.9}, {0.3, -0.3}, {0.5, 0.5}, {-0.3, 0.3}}, 1, "a convex quad: both face outward, b-d is shorter"},
-        {{{-0.3, -0.3}, {0.9, -0.9}, {0.3, 0.3}, {-0.9, 0.9}}, 0, "a convex quad: both face outward, a-c is shorter"}};
+        {{{-0.3, -0.3}, {0.9, -0.9}, {0.3, 0.3}, {-0.9, 0.9}}, 0, "a convex quad: both face outward, a-c is shorter"},
+        {{{-0.5, -0.5}, {0.5, -0.5}, {0.5, 0.5}, {-0.5, 0.5}}, 0,
+         "a square: both face outward, equal diagonals: the one from the first vertex, a-c"}};
     for (const Case& cs : cases) {
         Octree t;
         t.init_cartesian(f, 2, lo, side);
@@ -209,6 +333,121 @@ TEST_CASE("contour: a quad is split along the diagonal whose triangles face outw
                                                << (cs.diagonal == 0 ? "a-c" : "b-d") << "; " << along_diagonal
                                                << " of them hold it");
         CHECK_MESSAGE(facing_out == 2, facing_out << " of the quad's 2 triangles face outward (+x)");
+    }
+}
+
+TEST_CASE("contour: a leaf around a sign-changing edge with no vertex (or none of whose vertices crosses it) throws "
+          "TopologyError" *
+          geolab::points(1) *
+          geolab::hint("Throw geolab::TopologyError (not a crash, not a silent hole) when a leaf around a sign-changing "
+                       "minimal edge has no vertex, on any tree (uniform, adaptive, spherical), or has several vertices "
+                       "of which none has the edge in its `edges`.")) {
+    const FieldPtr sphere = geolab::sphere({0.1, -0.05, 0.08}, 0.6);
+    // a leaf of level `level` with a sign change (the sphere lies inside the domain: every sign-changing edge has an
+    // inside end off the domain's boundary, so all of its quadrants are leaves)
+    auto cut_leaf = [](const Octree& t, int level) {
+        for (std::uint32_t li : tree_shape(t).leaves) {
+            const OctreeNode& nd = t.nodes[li];
+            const int m = expected_signs(t, nd);
+            if (nd.level == level && m != 0 && m != 0xff && nd.vertex != invalid_index) return li;
+        }
+        return invalid_index;
+    };
+    struct Case {
+        Octree t;
+        int level;
+        const char* what;
+    };
+    std::vector<Case> cases;
+    cases.push_back({given_octree(*sphere, 4), 4, "a finest leaf of a uniform Cartesian tree, level 4"});
+    cases.push_back({half_refined_cartesian(*sphere, 5, 2), 2, "a leaf of level 2 of an adaptive Cartesian tree"});
+    cases.push_back({half_refined_spherical(*sphere, 4, 4, 1.0), 4, "a finest leaf of a uniform spherical tree"});
+    for (Case& cs : cases) {
+        given_vertices(cs.t);
+        const std::uint32_t li = cut_leaf(cs.t, cs.level);
+        INFO(cs.what);
+        REQUIRE(li != invalid_index);
+        REQUIRE_NOTHROW(contour(cs.t));
+        cs.t.nodes[li].vertex = invalid_index;
+        CHECK_THROWS_AS(contour(cs.t), geolab::TopologyError);
+    }
+    // two pieces, neither of which claims its edges (and the next leaf's vertex claims every edge)
+    const DiagonalBalls balls(5, {16, 16, 16}, 0.4, 0.2);
+    Octree t = given_octree(balls, 5);
+    given_vertices(t);
+    const std::uint32_t li = leaf_of_cell(t, {16, 16, 16});
+    REQUIRE(li != invalid_index);
+    const std::uint32_t v = t.nodes[li].vertex;
+    REQUIRE(v != invalid_index);
+    REQUIRE(t.vertices[v].pieces == 2);
+    REQUIRE(v + 2 < t.vertices.size());
+    t.vertices[v].edges = t.vertices[v + 1].edges = 0;
+    t.vertices[v + 2].edges = 0xfff;
+    INFO("the cell between two balls: its 2 vertices with edges = 0");
+    CHECK_THROWS_AS(contour(t), geolab::TopologyError);
+}
+
+TEST_CASE("contour (spherical): each pole ring takes the piece crossing the axis edge from a leaf with two pieces" *
+          geolab::points(1) *
+          geolab::hint("A ring leaf with several vertices gives the one whose edges hold the axis edge: cell edge 0 "
+                       "(corners 0, 1) at the north pole, cell edge 1 (corners 2, 3) at the south pole. Handout §1.1.")) {
+    // level 3, r_max 1: an inside point on the axis (r index 2) and one inside point next to the axis at r index 3 in
+    // the first theta ring (north: j = 1; south: j = 7), phi index 5: the ring leaf at r [2, 3], phi [5, 6] then has
+    // two pieces, the axis edge's and the lone corner's
+    for (const bool north : {true, false}) {
+        const SphericalLatticePoints f(3, 1.0, {{2, north ? 0 : 8, 0}, {3, north ? 1 : 7, 5}});
+        Octree t;
+        t.init_spherical(f, 3, glm::dvec3(0.0), 0.0, 1.0);
+        for (std::uint32_t n = 0; n < t.nodes.size(); ++n)
+            if (t.nodes[n].level < 3) t.split(n);
+        given_vertices(t);
+        const char* what = north ? "north pole" : "south pole";
+        INFO(what << ": " << leaves_with_pieces(t, 2) << " leaves with 2 pieces");
+        REQUIRE(leaves_with_pieces(t, 2) > 0);
+        const ReferenceContour ref = reference_contour(t);
+        REQUIRE(ref.no_vertex.empty());
+        REQUIRE(ref.rings.size() > 0);
+        std::vector<PoleRing> rings;
+        PolygonSoup s;
+        REQUIRE_NOTHROW(s = contour(t, &rings));
+        const std::string ring_diff = compare_rings(s, rings, ref);
+        CHECK_MESSAGE(ring_diff.empty(), ring_diff);
+        const std::string diff = compare_polygons(s, ref);
+        CHECK_MESSAGE(diff.empty(), diff);
+    }
+}
+
+TEST_CASE("contour (spherical level 1): the two quads that join the same 4 vertices take different diagonals" *
+          geolab::points(1) *
+          geolab::hint("At level 1 the two phi cells share both their phi faces, so the radial edges at phi = 0 and at "
+                       "phi = pi are surrounded by the same 4 leaves: split the second quad along the diagonal the first "
+                       "did not take, or the same two triangles cover it twice (edges in 4 faces).")) {
+    for (const glm::dvec3 centre : {glm::dvec3(0.02, -0.01, 0.03), glm::dvec3(-0.03, 0.02, -0.02)}) {
+        const FieldPtr f = geolab::sphere(centre, 0.7);
+        Octree t;
+        t.init_spherical(*f, 1, glm::dvec3(0.0), 0.0, 1.0);
+        t.split(0);
+        given_vertices(t);
+        std::vector<PoleRing> rings;
+        PolygonSoup s;
+        REQUIRE_NOTHROW(s = contour(t, &rings));
+        const geolab::SurfaceCheck sc = surface_check(s, false);
+        INFO("sphere r = 0.7 at " << str(centre) << ", spherical level 1, shell [0, 1]: " << sc.summary() << "; "
+                                  << rings.size() << " pole rings");
+        CHECK(s.n_faces() == 4);
+        CHECK(sc.non_manifold_edges == 0);
+        CHECK(sc.misoriented_edges == 0);
+        CHECK(sc.boundary_edges == 0);  // rings of 2 vertices (one per phi cell) leave no hole
+        // the 4 triangles are 4 different triangles
+        std::set<std::array<std::uint32_t, 3>> tris;
+        for (std::size_t i = 0; i < s.n_faces(); ++i) {
+            auto vs = s.face(i);
+            REQUIRE(vs.size() == 3);
+            std::array<std::uint32_t, 3> k{vs[0], vs[1], vs[2]};
+            std::sort(k.begin(), k.end());
+            tris.insert(k);
+        }
+        CHECK(tris.size() == s.n_faces());
     }
 }
 
