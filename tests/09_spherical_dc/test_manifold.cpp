@@ -1,5 +1,6 @@
 // Lab 09: manifold dual contouring (handout §1.1): a vertex per piece of a finest cell's surface, polygons that take
 // the piece crossing their edge, the diagonal of each quad, and closed 2-manifolds on real models.
+#include <bitset>
 #include <set>
 
 #include "manifold.hpp"
@@ -177,6 +178,45 @@ TEST_CASE("place_vertices: a leaf coarser than the finest level gets one vertex 
         CHECK_MESSAGE(wrong_position == 0, wrong_position << " coarse leaves' vertices are neither their QEF minimiser "
                                                              "in the cell nor the clamped mass point" << where.str());
     }
+}
+
+TEST_CASE("place_vertices: random corner signs on a small lattice (all 256 configurations and joined faces) in "
+          "DualVertex's layout" *
+          geolab::points(1) *
+          geolab::hint("Every finest leaf: the pieces of cell_surface(signs, face_joins(tree, leaf)) — do not skip "
+                       "face_joins for any configuration that has an ambiguous face. Handout §1.1.")) {
+    Lcg rng(21);
+    std::size_t cells = 0, multi = 0, joined = 0, wrong = 0;
+    std::bitset<256> seen;
+    std::ostringstream first;
+    for (int pattern = 0; pattern < 120; ++pattern) {
+        // level 2: 5 x 5 x 5 lattice points, each inside with probability 0.3 to 0.7
+        const double p_in = 0.3 + 0.4 * rng.uniform();
+        std::vector<glm::ivec3> islands;
+        for (int x = 0; x <= 4; ++x)
+            for (int y = 0; y <= 4; ++y)
+                for (int z = 0; z <= 4; ++z)
+                    if (rng.uniform() < p_in) islands.push_back({x, y, z});
+        const LatticeBlock f(2, 1, 0, {}, islands);
+        Octree t = given_octree(f, 2);
+        place_vertices(t, {});
+        for (std::uint32_t li : tree_shape(t).leaves) {
+            const OctreeNode& nd = t.nodes[li];
+            seen.set(std::size_t(expected_signs(t, nd)));
+            ++cells;
+        }
+        multi += leaves_with_pieces(t, 2);
+        joined += leaves_with_joins(t);
+        std::ostringstream here;
+        const std::size_t w = wrong_layouts(t, here, true);
+        if (w && wrong == 0) first << "\n  pattern " << pattern << ":" << here.str();
+        wrong += w;
+    }
+    INFO(cells << " finest cells in 120 random sign patterns, " << seen.count() << " of the 256 configurations, " << multi
+               << " cells with 2 or more pieces, " << joined << " with a joined face");
+    REQUIRE(seen.count() == 256);
+    REQUIRE(joined > 0);
+    CHECK_MESSAGE(wrong == 0, wrong << " leaves do not have the vertices DualVertex's layout says" << first.str());
 }
 
 }  // TEST_SUITE
@@ -422,7 +462,11 @@ TEST_CASE("contour (spherical level 1): the two quads that join the same 4 verti
           geolab::hint("At level 1 the two phi cells share both their phi faces, so the radial edges at phi = 0 and at "
                        "phi = pi are surrounded by the same 4 leaves: split the second quad along the diagonal the first "
                        "did not take, or the same two triangles cover it twice (edges in 4 faces).")) {
-    for (const glm::dvec3 centre : {glm::dvec3(0.02, -0.01, 0.03), glm::dvec3(-0.03, 0.02, -0.02)}) {
+    // spheres about 26 points near the origin: each of the two quads' diagonals is the shorter one in some of them
+    std::vector<glm::dvec3> centres;
+    for (int i = 0; i < 27; ++i)
+        if (i != 13) centres.push_back(0.04 * glm::dvec3(i % 3 - 1, (i / 3) % 3 - 1, i / 9 - 1) + glm::dvec3(0.003, -0.002, 0.001));
+    for (const glm::dvec3& centre : centres) {
         const FieldPtr f = geolab::sphere(centre, 0.7);
         Octree t;
         t.init_spherical(*f, 1, glm::dvec3(0.0), 0.0, 1.0);
@@ -439,6 +483,43 @@ TEST_CASE("contour (spherical level 1): the two quads that join the same 4 verti
         CHECK(sc.misoriented_edges == 0);
         CHECK(sc.boundary_edges == 0);  // rings of 2 vertices (one per phi cell) leave no hole
         // the 4 triangles are 4 different triangles
+        std::set<std::array<std::uint32_t, 3>> tris;
+        for (std::size_t i = 0; i < s.n_faces(); ++i) {
+            auto vs = s.face(i);
+            REQUIRE(vs.size() == 3);
+            std::array<std::uint32_t, 3> k{vs[0], vs[1], vs[2]};
+            std::sort(k.begin(), k.end());
+            tris.insert(k);
+        }
+        CHECK(tris.size() == s.n_faces());
+    }
+    // the 4 vertices placed by hand (each in its cell: A = theta < pi/2, B = theta > pi/2; 0 = phi < pi, 1 = phi > pi)
+    // so that the shorter diagonal is A0-B1, then A1-B0: both quads prefer the same pair, the second must not take it
+    for (int config = 0; config < 2; ++config) {
+        const FieldPtr f = geolab::sphere(glm::dvec3(0.002, -0.001, 0.003), 0.7);
+        Octree t;
+        t.init_spherical(*f, 1, glm::dvec3(0.0), 0.0, 1.0);
+        t.split(0);
+        given_vertices(t);
+        const double near = 0.38, far = 0.6;  // r 0.54 and 0.85: in the outer shell r in [0.5, 1]
+        for (std::uint32_t li : tree_shape(t).leaves) {
+            const OctreeNode& nd = t.nodes[li];
+            if (nd.vertex == invalid_index) continue;
+            REQUIRE(nd.x == 1);
+            const bool b_cell = nd.y == 1, phi1 = nd.z == 1;
+            const bool short_pair = config == 0 ? b_cell == phi1 : b_cell != phi1;  // A0, B1 (config 0) or A1, B0
+            const double d = short_pair ? near : far;
+            t.vertices[nd.vertex].position = glm::dvec3(phi1 ? -0.05 : 0.05, phi1 ? -d : d, b_cell ? -d : d);
+        }
+        std::vector<PoleRing> rings;
+        PolygonSoup s;
+        REQUIRE_NOTHROW(s = contour(t, &rings));
+        const geolab::SurfaceCheck sc = surface_check(s, false);
+        INFO("vertices placed by hand, the shorter diagonal " << (config == 0 ? "A0-B1" : "A1-B0") << ": "
+                                                              << sc.summary());
+        CHECK(s.n_faces() == 4);
+        CHECK(sc.non_manifold_edges == 0);
+        CHECK(sc.misoriented_edges == 0);
         std::set<std::array<std::uint32_t, 3>> tris;
         for (std::size_t i = 0; i < s.n_faces(); ++i) {
             auto vs = s.face(i);
