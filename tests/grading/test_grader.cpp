@@ -55,6 +55,34 @@ TEST_CASE("the grader lists every fixture with its metadata") {
     CHECK(result("fails an assertion").info.hint == "look at the sum");
     CHECK(result("ungraded").info.points == 0);
     CHECK(result("passes").info.suite == "fixtures");
+    // declared dependencies on other tasks (grading/chain.hpp): only the independence check reads them
+    CHECK(result("hidden and passes").info.builds_on == "Task 2");
+    CHECK(result("ungraded").info.builds_on == "*");
+    CHECK(result("passes").info.builds_on.empty());
+}
+
+TEST_CASE("--geolab-run-all runs every listed test in one process, failures or not, one verdict line each") {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / ("geolab_run_all_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    {
+        std::ofstream list(dir / "list.txt");
+        list << "5\tpasses\n5\tfails an assertion\n5\tnot implemented\n5\thidden and passes\n";
+    }
+    geolab::grading::RunOptions o;
+    o.sandbox.no_network = false;
+    const auto c = geolab::grading::run_command(
+        {std::string(GEOLAB_FIXTURE_PROGRAM), "--geolab-run-all", (dir / "list.txt").string(), (dir / "out.jsonl").string()},
+        30, o);
+    CHECK(c.exit_code == 0);
+    std::ifstream in(dir / "out.jsonl");
+    std::vector<std::string> status;
+    for (std::string line; std::getline(in, line);) {
+        const auto j = nlohmann::json::parse(line);
+        status.push_back(j.at("status").get<std::string>() + (j.value("not_implemented", false) ? " (stub)" : ""));
+    }
+    CHECK(status == std::vector<std::string>{"passed", "failed", "failed (stub)", "passed"});
+    fs::remove_all(dir);
 }
 
 TEST_CASE("each misbehaviour is isolated and classified") {

@@ -859,6 +859,7 @@ std::vector<TestInfo> list_tests(const std::filesystem::path& program, const Run
         t.hidden = j.value("hidden", false);
         t.hint = j.value("hint", "");
         t.timeout_s = j.value("timeout", 0.0);
+        t.builds_on = j.value("builds_on", "");
         if (!j.value("filter_safe", true))
             throw std::runtime_error(t.file + ":" + std::to_string(t.line) + ": test name '" + t.name +
                                      "' contains one of * ? , \\ [ ] which the grader cannot select exactly");
