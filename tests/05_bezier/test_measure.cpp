@@ -1,6 +1,7 @@
 // Lab 05, Task 3: arc length and its inverse, the tight bounding box, the closest point. Expected values: closed
 // forms, composite Simpson and dense sampling refined by golden-section search, all in long double.
 #include "helpers.hpp"
+#include "geolab/grading/chain.hpp"
 
 using namespace lab05;
 
@@ -41,12 +42,13 @@ LD ref_extreme(const Poly3& P, int axis, bool max) {
 
 TEST_SUITE("Task 3: measures") {
     TEST_CASE("arc length: a straight cubic; the parabola y = x²; and random curves to the requested tolerance" *
-              geolab::points(3) *
+              geolab::points(3) * geolab::builds_on("Task 1, Task 2") *
               geolab::hint("Integrate |C'| by Gauss–Legendre mapped to [a, b]; halve intervals where the 5- and "
                            "10-point rules disagree by more than their share of tol (handout §4).")) {
         const Poly3 line{{0, 0, 0}, {3, 0, 0}, {3, 0, 0}, {4, 0, 0}};  // x(t) non-uniform but monotone: length 4
-        INFO("straight cubic " << str(line) << ": expected length 4, got " << num(arc_length(line, 0, 1, 1e-12)));
-        CHECK(std::abs(arc_length(line, 0, 1, 1e-12) - 4) <= 2e-12);
+        const double length = arc_length(line, 0, 1, 1e-12);  // once: an INFO must not call your code again
+        INFO("straight cubic " << str(line) << ": expected length 4, got " << num(length));
+        CHECK(std::abs(length - 4) <= 2e-12);
         const Poly3 parabola{{-1, 1, 0}, {0, -1, 0}, {1, 1, 0}};
         const double want = std::sqrt(5.0) + 0.5 * std::asinh(2.0);
         const double got = arc_length(parabola, 0, 1, 1e-12);
@@ -72,6 +74,7 @@ TEST_SUITE("Task 3: measures") {
     }
 
     TEST_CASE("parameter at length: the inverse of the arc length" * geolab::points(3) *
+              geolab::builds_on("Task 1, Task 2") *
               geolab::hint("Solve length(0, t) = s: Newton (the derivative is |C'(t)|) inside a bracket, bisecting "
                            "when Newton leaves it.")) {
         const Poly3 line{{0, 0, 0}, {3, 0, 0}, {3, 0, 0}, {4, 0, 0}};  // x(t) = 9t − 9t² ... ; length to x is x
@@ -99,7 +102,7 @@ TEST_SUITE("Task 3: measures") {
     }
 
     TEST_CASE("bounding box: tight (the extremes of each coordinate) and inside the control points' box" *
-              geolab::points(3) *
+              geolab::points(3) * geolab::builds_on("Task 1, Task 2") *
               geolab::hint("Per axis: the ends and C at the roots in (0, 1) of that coordinate of C'. The control "
                            "points' box is only an upper bound (convex hull property), not the answer.")) {
         const Poly3 parabola{{-1, 1, 0}, {0, -1, 0}, {1, 1, 0}};
@@ -130,6 +133,7 @@ TEST_SUITE("Task 3: measures") {
     }
 
     TEST_CASE("closest point: the global minimum; at the ends too" * geolab::points(3) *
+              geolab::builds_on("Task 1, Task 2") *
               geolab::hint("Bracket candidates (sampling or subdivision), refine each by Newton on (C − q)·C' = 0 "
                            "clamped to [0, 1], and compare with both ends: a local minimum is not enough.")) {
         const Poly3 parabola{{-1, 1, 0}, {0, -1, 0}, {1, 1, 0}};

@@ -1,6 +1,7 @@
 // Lab 05, Tasks 5 and 6: tensor-product patches and the Utah teapot. Expected values from the tensor-product
 // Bernstein form in long double (helpers.hpp); the teapot from lib's reader of data/teapot.bpt.
 #include "helpers.hpp"
+#include "geolab/grading/chain.hpp"
 
 using namespace lab05;
 
@@ -19,7 +20,7 @@ BezierPatch cap() {
 
 TEST_SUITE("Task 5: tensor-product patches") {
     TEST_CASE("patch point: Σ B_i(u) B_j(v) P_ij with i along u; j along v; for degrees 1..4 × 1..4" *
-              geolab::points(2) *
+              geolab::points(2) * geolab::builds_on("Task 1") *
               geolab::hint("P_ij = points[i (degree_v + 1) + j]; de Casteljau in u on each column j (P_0j .. P_nj), "
                            "then in v on the results. A 2 × 3 patch tells u from v.")) {
         Rng rng(40);
@@ -42,7 +43,7 @@ TEST_SUITE("Task 5: tensor-product patches") {
         CHECK_THROWS_AS(patch_point(bad, 0.5, 0.5), std::invalid_argument);
     }
 
-    TEST_CASE("patch derivatives: S_u and S_v" * geolab::points(2) *
+    TEST_CASE("patch derivatives: S_u and S_v" * geolab::points(2) * geolab::builds_on("Task 1, Task 2") *
               geolab::hint("S_u: the u-derivative of each column's curve, then de Casteljau in v; S_v: the points of "
                            "the columns at u, then the derivative of that curve in v.")) {
         Rng rng(41);
@@ -61,6 +62,7 @@ TEST_SUITE("Task 5: tensor-product patches") {
     }
 
     TEST_CASE("patch normal: unit; along S_u × S_v; the limit at a collapsed edge" * geolab::points(2) *
+              geolab::builds_on("Task 1, Task 2") *
               geolab::hint("Where S_u × S_v = 0 (a collapsed edge) take the limit moving into the patch: the first-"
                            "order term, or a point moved slightly inside (handout §6). Never NaN.")) {
         Rng rng(42);
@@ -226,7 +228,7 @@ TEST_SUITE("Task 5: tensor-product patches") {
 }
 
 TEST_SUITE("Task 6: the Utah teapot") {
-    TEST_CASE("teapot: shared patch edges agree within 1e-12" * geolab::points(2) *
+    TEST_CASE("teapot: shared patch edges agree within 1e-12" * geolab::points(2) * geolab::builds_on("Task 1") *
               geolab::hint("Neighbouring patches share their border control points; your patch_point must give the "
                            "same points along the shared border.")) {
         const auto& T = teapot();
@@ -250,6 +252,12 @@ TEST_SUITE("Task 6: the Utah teapot") {
             const double u = b.kind == 0 ? 0 : b.kind == 1 ? 1 : s, v = b.kind == 2 ? 0 : b.kind == 3 ? 1 : s;
             return patch_point(T[b.patch], u, v);
         };
+        // (points that agree because they are all the same prove nothing): a patch passes through its corners
+        for (int p = 0; p < 32; ++p) {
+            const glm::dvec3 c = patch_point(T[p], 0, 0);
+            CHECK_MESSAGE(glm::length(c - T[p].points[0]) <= 1e-12, "patch " << p << " at (0, 0): expected its corner "
+                                                                            << str(T[p].points[0]) << ", got " << str(c));
+        }
         int shared = 0;
         for (std::size_t a = 0; a < borders.size(); ++a)
             for (std::size_t b = a + 1; b < borders.size(); ++b) {
@@ -274,6 +282,7 @@ TEST_SUITE("Task 6: the Utah teapot") {
     }
 
     TEST_CASE("teapot: normals everywhere; vertical at the lid's top and the bottom's centre" * geolab::points(2) *
+              geolab::builds_on("Task 1, Task 2") *
               geolab::hint("Patches 20–23 (lid) and 28–31 (bottom) collapse their u = 0 edge to one point: S_u × S_v "
                            "= 0 there. The normal is the limit from inside the patch.")) {
         const auto& T = teapot();
@@ -297,7 +306,7 @@ TEST_SUITE("Task 6: the Utah teapot") {
     }
 
     TEST_CASE("teapot: samples inside each patch's convex hull; the body's normals point in (file order)" *
-              geolab::points(2) *
+              geolab::points(2) * geolab::builds_on("Task 1") *
               geolab::hint("S_u × S_v of the file's patches points into the teapot; tessellate with flip = true for "
                            "outward normals.")) {
         const auto& T = teapot();
