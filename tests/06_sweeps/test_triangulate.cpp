@@ -1,6 +1,7 @@
 // Lab 06, Task 2: triangulation. Expected values: the region's area (long double shoelace), the count n + 2h − 2,
 // and coverage: sample points of the region each lie in exactly one triangle, points outside it (holes) in none.
 #include "helpers.hpp"
+#include "geolab/grading/chain.hpp"
 
 using namespace lab06;
 
@@ -56,6 +57,7 @@ void check_triangulation(const Profile& p, const Tris& t, Rng& rng, int samples 
 
 TEST_SUITE("Task 2: triangulation") {
     TEST_CASE("triangulate: convex polygons and a square with a hole" * geolab::points(2) *
+              geolab::builds_on("Task 1") *
               geolab::hint("Ear clipping: a vertex is an ear when it is convex (orient2d > 0) and no other vertex lies "
                            "in its triangle; clip it, repeat (handout §3).")) {
         Rng rng(71);
@@ -66,6 +68,7 @@ TEST_SUITE("Task 2: triangulation") {
     }
 
     TEST_CASE("triangulate: random star-shaped (non-convex) polygons are covered exactly once" * geolab::points(3) *
+              geolab::builds_on("Task 1") *
               geolab::hint("A reflex corner is never an ear; an ear's triangle must not contain any other vertex "
                            "(test all of them, with exact orient2d).")) {
         Rng rng(72);
@@ -76,6 +79,7 @@ TEST_SUITE("Task 2: triangulation") {
     }
 
     TEST_CASE("triangulate: profiles with several holes (bridging) are covered exactly once" * geolab::points(3) *
+              geolab::builds_on("Task 1") *
               geolab::hint("Bridge each hole into the outer loop from its rightmost vertex to a vertex it sees (the "
                            "nearest crossing of the ray to +x, then the reflex vertices in the triangle), holes by "
                            "decreasing x; the bridge is walked twice (handout §3).")) {
@@ -93,7 +97,7 @@ TEST_SUITE("Task 2: triangulation") {
         check_triangulation(row, triangulate(row), rng);
     }
 
-    TEST_CASE("triangulate: combs and collinear points" * geolab::points(2) *
+    TEST_CASE("triangulate: combs and collinear points" * geolab::points(2) * geolab::builds_on("Task 1") *
               geolab::hint("Collinear consecutive points (orient2d = 0) are not ears; clip the others first. Deep notches "
                            "need the full containment test.")) {
         Rng rng(74);
@@ -107,11 +111,13 @@ TEST_SUITE("Task 2: triangulation") {
         check_triangulation(ring, triangulate(ring), rng);
     }
 
-    TEST_CASE("triangulate: invalid profiles are rejected" * geolab::points(1) *
+    TEST_CASE("triangulate: invalid profiles are rejected" * geolab::points(1) * geolab::builds_on("Task 1") *
               geolab::hint("Validate first (validate_profile) and let its std::invalid_argument through.")) {
         Profile p = square_with_hole();
         p.holes[0] = reversed(p.holes[0]);
         CHECK_THROWS_AS(triangulate(p), std::invalid_argument);
         CHECK_THROWS_AS(triangulate({Loop{{0, 0}, {2, 2}, {2, 0}, {0, 2}}, {}}), std::invalid_argument);
+        // valid input is no error ("reject everything" is not the contract)
+        CHECK(triangulate(square_with_hole()).size() == 8);
     }
 }  // TEST_SUITE
