@@ -1,6 +1,7 @@
 // Lab 07, Tasks 4-6: spans in primitives, Roth's combination, ray casting. Expected values: closed forms, and the
 // definitions of the primitives sampled along the ray (helpers.hpp).
 #include "helpers.hpp"
+#include "geolab/grading/chain.hpp"
 
 using namespace lab07;
 
@@ -283,6 +284,8 @@ TEST_SUITE("Task 5: combining interval lists") {
             const auto a = make(2 + n % 4), b = make(2 + (n / 4) % 4);
             for (Op o : {Op::unite, Op::intersect, Op::subtract}) {
                 const auto got = combine(o, a, b);
+                // (no span carries no wrong normal): a union of non-empty lists is not empty
+                if (o == Op::unite && !a.empty()) CHECK_MESSAGE(!got.empty(), "A ∪ B is empty although A is not");
                 for (const Span& s : got)
                     for (int e = 0; e < 2; ++e) {
                         const double t = e ? s.t1 : s.t0;
@@ -308,6 +311,7 @@ TEST_SUITE("Task 5: combining interval lists") {
     }
 
     TEST_CASE("combine: a box minus an equal box is empty; normals of subtracted parts are flipped" * geolab::points(3) *
+              geolab::builds_on("Task 4") *
               geolab::hint("In A − B the endpoints that come from B take −(B's normal): the wall of a hole faces into "
                            "the hole.")) {
         const Tree box = leaf(Shape::box, glm::dvec3(1.0));
@@ -327,6 +331,7 @@ TEST_SUITE("Task 5: combining interval lists") {
     }
 
     TEST_CASE("ray_spans: leaves map the ray by M⁻¹ and normals by M⁻ᵀ" * geolab::points(3) *
+              geolab::builds_on("Task 4") *
               geolab::hint("The local ray is (M⁻¹ o, M⁻¹ d) with the same t; the world normal is normalize(M⁻ᵀ n). "
                            "Using M instead of M⁻¹ moves a translated sphere the wrong way.")) {
         const Tree s = leaf(Shape::sphere, {1, 0, 0}, translate({3, 0, 0}));
@@ -368,6 +373,7 @@ TEST_SUITE("Task 5: combining interval lists") {
 
 TEST_SUITE("Task 6: ray casting") {
     TEST_CASE("first_hit: entering; starting inside (the exit); behind the origin; missing" * geolab::points(3) *
+              geolab::builds_on("Task 4, Task 5") *
               geolab::hint("The first span end with t ≥ t_min: t0 if t0 ≥ t_min, else t1 if the ray starts inside.")) {
         const Tree t = logo();
         // (0.5, 0.45) is on the top face (inside the sphere's disc ρ < √(1.3² − 1) = 0.83, outside the z hole
@@ -403,6 +409,7 @@ TEST_SUITE("Task 6: ray casting") {
     }
 
     TEST_CASE("first_hit: the logo from random directions agrees with the definition" * geolab::points(3) *
+              geolab::builds_on("Task 4, Task 5") *
               geolab::hint("Every hit point is on the boundary: inside just after (entering) or just before.")) {
         const Tree t = logo();
         Rng rng(51);
@@ -434,6 +441,7 @@ TEST_SUITE("Task 6: ray casting") {
     }
 
     TEST_CASE("render_image: hits are grey 0.1 + 0.8|n·l|; misses white; size and alpha" * geolab::points(3) *
+              geolab::builds_on("Task 4, Task 5") *
               geolab::hint("One ray per pixel through camera.ray(x, y, w, h), first_hit with t_min = 0.")) {
         const Tree t = leaf(Shape::box, glm::dvec3(0.5), rotate(30, {0, 1, 0}));
         PinholeCamera cam;

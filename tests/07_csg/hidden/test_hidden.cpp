@@ -1,6 +1,7 @@
 // Lab 07 hidden tests: run by the grader, left out of the student release. Same tasks (suites), same independent
 // references (helpers.hpp), other inputs.
 #include "../helpers.hpp"
+#include "geolab/grading/chain.hpp"
 
 using namespace lab07;
 
@@ -27,6 +28,7 @@ TEST_SUITE("Task 1: primitives") {
 
 TEST_SUITE("Task 2: signed distances") {
     TEST_CASE("sdf hidden: nested trees under rotations agree with min/max of the leaves" * geolab::points(3) *
+              geolab::builds_on("Task 1") *
               geolab::hidden() * geolab::hint("Recurse over the tree; each leaf in its own coordinates.")) {
         Rng rng(102);
         for (int n = 0; n < 20; ++n) {
@@ -40,8 +42,9 @@ TEST_SUITE("Task 2: signed distances") {
                 const double db = double(ref_distance(b.nodes[0], to_local(M2, x)));
                 const double dc = double(ref_distance(c.nodes[0], to_local(M3, x)));
                 const double want = std::max(std::min(da, db), -dc);
-                INFO("(torus ∪ box) − cone, random rigid motions, at " << str(x) << ": expected " << want << ", got " << sdf(t, x));
-                CHECK(std::abs(sdf(t, x) - want) <= 1e-9);
+                const double got = sdf(t, x);  // once: a message must not call your code again
+                INFO("(torus ∪ box) − cone, random rigid motions, at " << str(x) << ": expected " << want << ", got " << got);
+                CHECK(std::abs(got - want) <= 1e-9);
             }
         }
         Tree bad = leaf(Shape::sphere, {1, 0, 0});
@@ -52,6 +55,7 @@ TEST_SUITE("Task 2: signed distances") {
 
 TEST_SUITE("Task 3: point membership") {
     TEST_CASE("classify hidden: random trees of moved primitives against the definition" * geolab::points(3) *
+              geolab::builds_on("Task 1") *
               geolab::hidden() * geolab::hint("Points far from every surface are in or out exactly as the set says.")) {
         Rng rng(103);
         for (int n = 0; n < 15; ++n) {
@@ -101,6 +105,7 @@ TEST_SUITE("Task 4: spans in a primitive") {
 
 TEST_SUITE("Task 5: combining interval lists") {
     TEST_CASE("ray_spans hidden: random trees along random rays against the definition" * geolab::points(4) *
+              geolab::builds_on("Task 4") *
               geolab::hidden() * geolab::hint("Combine the children's lists at every inner node.")) {
         Rng rng(105);
         for (int n = 0; n < 25; ++n) {
@@ -136,6 +141,7 @@ TEST_SUITE("Task 5: combining interval lists") {
 
 TEST_SUITE("Task 6: ray casting") {
     TEST_CASE("first_hit hidden: a box minus an equal moved box; a sphere seen from inside" * geolab::points(2) *
+              geolab::builds_on("Task 4, Task 5") *
               geolab::hidden() * geolab::hint("Rays starting inside report the exit with the outward normal.")) {
         const glm::dmat4 M = rotate(33, glm::normalize(glm::dvec3(1, 2, 3))) * scale({1, 2, 0.5});
         const Tree b = leaf(Shape::box, glm::dvec3(1.0), M);
@@ -157,6 +163,7 @@ TEST_SUITE("Task 6: ray casting") {
 
 TEST_SUITE("Task 7: meshes and volumes") {
     TEST_CASE("mesh hidden: sphere minus a moved sphere and a torus: volumes converge" * geolab::points(2) *
+              geolab::builds_on("Task 1, Task 2") *
               geolab::hidden() * geolab::hint("The mesh must be closed and outward: pad the box.")) {
         // sphere r = 1 minus a sphere r = 1 centred at distance 1: the lens removed has volume 5π/12
         const Tree t = op(Op::subtract, leaf(Shape::sphere, {1, 0, 0}), leaf(Shape::sphere, {1, 0, 0}, translate({1, 0, 0})));
