@@ -426,6 +426,9 @@ std::string IndependenceReport::text() const {
         if (chain > 0) os << (first ? "" : "; ") << "whole-chain tests -" << chain;
         os << "\n";
     }
+    os << "  owners:";
+    for (const auto& [task, file] : owner) os << " " << task.substr(0, task.find(':')) << " " << file << ";";
+    os << "\n";
     for (const auto& n : notes) os << "  note: " << n << "\n";
     for (const auto& p : problems) os << "PROBLEM: " << p << "\n";
     os << "independence " << lab << ": " << (problems.empty() ? "OK" : "FAILED") << " in "

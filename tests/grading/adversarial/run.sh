@@ -81,9 +81,21 @@ run_pool() {
   wait
 }
 
-# A submission folder: the base's files, then `files` from `from` (a folder) or left out (the stub is used).
-# make_sub DIR BASE MODE CASEDIR: MODE case (the case's files), stub (the case's files left out), ref (the
-# reference's copy of the case's files), honest (the case's files, then its honest/ files)
+# put FILE DIR: a case's file into a submission folder; a *.cpp.in has @SRC@, @BUILD@ and @OUT@ filled in, and a
+# line @REFERENCE@ becomes the reference's copy of that file (a case adds its twist around it).
+put() {
+  local f=$1 dir=$2 b
+  b=$(basename "$f" .in)
+  if [[ $f == *.in ]]; then
+    awk -v ref="$src/solutions/$lab/src/$b" '$0 == "@REFERENCE@" { while ((getline l < ref) > 0) print l; next } { print }' "$f" |
+      sed -e "s|@SRC@|$src|g" -e "s|@BUILD@|$build|g" -e "s|@OUT@|$out|g" >"$dir/$b"
+  else cp "$f" "$dir/$b"; fi
+}
+
+# make_sub DIR BASE MODE CASEDIR: a submission folder: the base's files (stubs or reference), then per MODE:
+# case, nolist (the case's files), stub (the case's files left out: the stub is used), ref (the reference's copy of
+# the case's files), honest (the case's files, then its honest/ files over them), given (the case's files, then
+# the course's given files over them).
 make_sub() {
   local dir=$1 base=$2 mode=$3 case_dir=$4 f b
   rm -rf "$dir"; mkdir -p "$dir"
@@ -92,17 +104,14 @@ make_sub() {
     [ -e "$f" ] || continue
     b=$(basename "$f" .in)
     case $mode in
-      case | honest | nolist | given)
-        if [[ $f == *.in ]]; then
-          # a line @REFERENCE@ becomes the reference's copy of this file (a case adds its twist around it)
-          awk -v ref="$src/solutions/$lab/src/$b" '$0 == "@REFERENCE@" { while ((getline l < ref) > 0) print l; next } { print }' "$f" |
-            sed -e "s|@SRC@|$src|g" -e "s|@BUILD@|$build|g" -e "s|@OUT@|$out|g" >"$dir/$b"
-        else cp "$f" "$dir/$b"; fi ;;
+      case | honest | nolist | given) put "$f" "$dir" ;;
       stub) rm -f "$dir/$b" ;;
       ref) cp "$src/solutions/$lab/src/$b" "$dir/$b" ;;
     esac
   done
-  if [ "$mode" = honest ]; then cp "$case_dir"/honest/*.cpp "$dir/"; fi
+  if [ "$mode" = honest ]; then
+    for f in "$case_dir"/honest/*.cpp "$case_dir"/honest/*.cpp.in; do [ -e "$f" ] && put "$f" "$dir"; done
+  fi
   if [ "$mode" = given ]; then
     for f in $(grep -v '^#' "$src/labs/$lab/given.txt" 2>/dev/null); do cp "$src/labs/$lab/src/$f" "$dir/$f"; done
   fi
@@ -187,6 +196,12 @@ for nn in "$@"; do
       *) fail "$nn/$name: unknown expectation '$expect'"; continue ;;
     esac
     [ "$rc" = 0 ] || fail "$nn/$name: geolab exited with $rc (see $out/$name.log)"
+    if [ "$expect" != compile_error ] && grep -q '"output": "status: compile error' "$json"; then
+      fail "$nn/$name: the case does not compile, so it attacks nothing (see $out/$name.log)"
+    fi
+    if [ -n "$key" ] && grep -q '"output": "status: compile error' "$out/$key.json"; then
+      fail "$nn/$name: its honest twin $key does not compile (see $out/$key.log)"
+    fi
     grep -q "verdict not isolated" "$json" && fail "$nn/$name: the report says the verdict is not isolated"
     if [ -e "$case_dir/leak" ] && grep -q "$(cat "$case_dir/leak")" "$json"; then
       fail "$nn/$name: results.json holds what the submission must not see: $(grep -o "$(cat "$case_dir/leak")[^\\\"]*" "$json" | head -5 | tr '\n' ';')"
