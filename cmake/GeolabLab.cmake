@@ -5,7 +5,9 @@
 # and one test program per variant from tests/NN_name/*.cpp and tests/NN_name/hidden/*.cpp:
 #   test_NN_name, test_NN_name_solution   (with a GEOLAB_BOUNDARY list: the performers, which record)
 #   judge_NN_name                         (with a GEOLAB_BOUNDARY list: tests + given code + replay, no student code)
-# plus the lab's demo (labs/NN_name/demo.cpp) linked against GEOLAB_VARIANT_<NN>, the variant the program uses.
+# plus the lab's demo (labs/NN_name/demo.cpp) linked against GEOLAB_VARIANT_<NN>, the variant the program uses,
+# and in the instructor's tree also demo_NN_name_stubs, the same objects linked against the untouched stubs
+# (tests/demos checks that every demo runs on them).
 # geolab_add_boundary(ID API_HEADER INCLUDE_DIR OUT_DIR)
 # The record and replay thunks of the GEOLAB_BOUNDARY list in API_HEADER (a header under INCLUDE_DIR):
 #   OUT_DIR/recorder.o  the performer's (each thunk defines a student function, records, calls geolab_student_LINE)
@@ -85,10 +87,13 @@ function(geolab_add_lab lab)
     set(bdir ${PROJECT_BINARY_DIR}/boundary/${lab})
     geolab_add_boundary(${nn} ${api_header} ${lab_dir}/include ${bdir})
 
-    # The tests, compiled once for both performers.
+    # The tests, compiled once for both performers and the judge, with the standard library's assertions: hostile
+    # answers that make a test index out of range abort the judge (in a performer they only stop the student's own
+    # run). The assertions change no layout, so these objects link with code built without them.
     add_library(tests_${nn} OBJECT ${test_src})
     target_include_directories(tests_${nn} PRIVATE ${test_dir} ${lab_dir}/include)
     target_link_libraries(tests_${nn} PRIVATE geolab::core geolab::test_main Eigen3::Eigen)
+    target_compile_definitions(tests_${nn} PRIVATE _GLIBCXX_ASSERTIONS)
 
     set(lab_variants lab_${nn})
     if(GEOLAB_HAS_SOLUTIONS AND EXISTS ${sol_dir})
@@ -109,8 +114,7 @@ function(geolab_add_lab lab)
       set_property(TARGET ${program} APPEND PROPERTY LINK_DEPENDS ${bdir}/lib${v}_performer.a)
     endforeach()
 
-    # The judge: the tests again, the lab's GIVEN files (first line says so), the replayer. Built with the
-    # standard library's assertions: hostile answers that make a test index out of range abort the judge.
+    # The judge: the same test objects, the lab's GIVEN files (compiled with the assertions too), the replayer.
     # labs/NN_name/given.txt lists them (the grader and `geolab release --check` read the same list).
     set(given_src "")
     if(EXISTS ${lab_dir}/given.txt)
@@ -122,7 +126,7 @@ function(geolab_add_lab lab)
         endif()
       endforeach()
     endif()
-    add_executable(judge_${lab} ${test_src} ${given_src} ${bdir}/replayer.o)
+    add_executable(judge_${lab} $<TARGET_OBJECTS:tests_${nn}> ${given_src} ${bdir}/replayer.o)
     target_include_directories(judge_${lab} PRIVATE ${test_dir} ${lab_dir}/include)
     target_link_libraries(judge_${lab} PRIVATE $<TARGET_PROPERTY:lab_${nn},INTERFACE_LINK_LIBRARIES> geolab::test_main
                                                      Eigen3::Eigen)
@@ -146,7 +150,13 @@ function(geolab_add_lab lab)
   set_property(GLOBAL APPEND PROPERTY GEOLAB_VARIANT_LIBS ${variant})
 
   if(EXISTS ${lab_dir}/demo.cpp)
-    add_executable(demo_${lab} ${lab_dir}/demo.cpp)
+    add_library(demo_${nn}_obj OBJECT ${lab_dir}/demo.cpp)
+    target_link_libraries(demo_${nn}_obj PRIVATE lab_${nn} geolab::render CLI11::CLI11)  # (headers only)
+    add_executable(demo_${lab} $<TARGET_OBJECTS:demo_${nn}_obj>)
     target_link_libraries(demo_${lab} PRIVATE ${variant} geolab::render CLI11::CLI11)
+    if(NOT variant STREQUAL "lab_${nn}")
+      add_executable(demo_${lab}_stubs $<TARGET_OBJECTS:demo_${nn}_obj>)
+      target_link_libraries(demo_${lab}_stubs PRIVATE lab_${nn} geolab::render CLI11::CLI11)
+    endif()
   endif()
 endfunction()

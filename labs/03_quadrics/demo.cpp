@@ -1,5 +1,5 @@
-// Lab 03 demo: change a quadric's ten coefficients (or a superquadric's two exponents) and watch the surface and its
-// type follow. The quadric is drawn as the hits of a grid of rays through its clipping box (your intersect_in_box),
+// Lab 03 demo: change a quadric's ten coefficients (or a superquadric's two exponents) with the sliders or keys, and
+// watch the surface and its type follow. The quadric is drawn as the hits of a grid of rays through its clipping box (your intersect_in_box),
 // its type is your classify; the superquadric is your tessellate_superquadric. --figures renders the handout's
 // figures with your render_lambert: one image per type (17) and the superquadric family over (ε₁, ε₂).
 #include <algorithm>
@@ -20,6 +20,7 @@ namespace q = geolab::quadrics;
 
 const char* kKeys =
     "Window keys:\n"
+    "  sliders         drag a coefficient a ... d (superquadric: e1, e2) with the mouse, top left\n"
     "  N / P           next / previous example quadric (one of each of the 17 types)\n"
     "  1 ... 9, 0      select coefficient a b c f g h p q r d (superquadric: 1 = ε₁, 2 = ε₂)\n"
     "  + / -           change the selected coefficient by 0.1 (exponent: by 0.1, kept > 0.05)\n"
@@ -135,6 +136,18 @@ gr::Frame draw(const Demo& d) {
     }
     if (issues.any()) fr.status += " | " + issues.str();
     return fr;
+}
+
+// The sliders: the ten coefficients in [-2, 2] by 0.01, or the superquadric's exponents on a log scale.
+std::vector<gr::Slider> sliders(Demo& d) {
+    std::vector<gr::Slider> s;
+    if (d.superquadric) {
+        s.push_back(gr::slider("ε₁", d.e1, 0.05, 5.0, 0.01, true));
+        s.push_back(gr::slider("ε₂", d.e2, 0.05, 5.0, 0.01, true));
+    } else {
+        for (int i = 0; i < 10; ++i) s.push_back(gr::slider(kNames[i], d.k[std::size_t(i)], -2.0, 2.0, 0.01));
+    }
+    return s;
 }
 
 bool on_key(Demo& d, int key) {
@@ -377,10 +390,10 @@ int main(int argc, char** argv) {
             d.e1 = e1 > 0 ? e1 : 1.0;
             d.e2 = e2 > 0 ? e2 : 1.0;
         }
-        if (!program.png().empty()) return program.write_png(draw(d));
         return program.show({.title = "geolab demo 03: quadric surfaces",
                              .draw = [&] { return draw(d); },
                              .key = [&](int key) { return on_key(d, key); },
-                             .key_hint = [] { return std::string("N/P example, 1-0 select, +/- change, Q superquadric"); }});
+                             .key_hint = [] { return std::string(" | sliders, N/P example, 1-0 select, +/- change, Q superquadric"); },
+                             .sliders = [&] { return sliders(d); }});
     });
 }

@@ -1,5 +1,6 @@
 // Lab 04 demo: blobby objects polygonized by your marching cubes. Three blobs drift on circles through each other
-// (the lecture's drops that merge and split), the kernel is switched with K, the threshold with [ and ].
+// (the lecture's drops that merge and split; Space plays the animation), the kernel, the threshold, the lattice
+// and the time are chosen with sliders (or keys).
 // Headless: --png FILE renders the current state, --sequence DIR writes the animation's frames, --figures DIR the
 // handout's figures (kernels, merging, the 15 base cases, an ambiguous face, the crack of an inconsistent table).
 //
@@ -39,6 +40,8 @@ const vec3 kSurface{0.96f, 0.80f, 0.58f};  // case polygons: sand
 
 const char* kKeys =
     "Window keys:\n"
+    "  sliders         kernel, threshold T, lattice cells, time (top left)\n"
+    "  Space           play / pause the animation\n"
     "  N / B           step the animation forward / back\n"
     "  K               kernel: Blinn, Nishimura, Wyvill\n"
     "  [ / ]           threshold down / up\n"
@@ -47,18 +50,21 @@ const char* kKeys =
     "  Home, S, Esc    re-frame, screenshot (out/screenshots/), quit";
 
 struct Demo {
-    Kernel kernel = Kernel::wyvill;
+    int kernel = int(Kernel::wyvill);
     double threshold = 0.5;
-    int step = 0;       // animation time, 48 steps a period
+    double step = 0;    // animation time, 48 steps a period
     int cells = 48;     // lattice cells along the box side
     bool wire = false;
+    bool playing = false;
+    double play_from = -1;  // the animation clock's seconds at step 0 (< 0: not started)
 };
+constexpr double kStepsPerSecond = 8;  // the animation's speed: a period in 6 s
 
 // Three blobs on circles that pass through each other. Their shape parameters make the three kernels comparable:
 // Blinn's a gives the same isolated radius as Wyvill's R at T = 1/2 (a = 4 ln 2 / R²).
 BlobScene scene_at(const Demo& d) {
     BlobScene s;
-    s.kernel = d.kernel;
+    s.kernel = Kernel(d.kernel);
     s.threshold = d.threshold;
     const double t = 2 * 3.14159265358979 * d.step / 48.0;
     const dvec3 c[3] = {{0.55 * std::cos(t), 0.55 * std::sin(t), 0.0},
@@ -96,7 +102,7 @@ gr::Frame draw(const Demo& d) {
     fr.scene.add_lines(box, kAxes, 1.0f);
     if (m) fr.scene.add_mesh(m->soup, {.color = kBlob, .smooth = false, .wireframe = d.wire});
     fr.camera = gr::camera_from(gr::box_around(dvec3(0.0), 1.6), dvec3(0.4, 0.5, 1.0));
-    fr.status = kernel_name(d.kernel) + ", T " + gr::fmt(d.threshold) + ", step " + std::to_string(d.step) + ", " +
+    fr.status = kernel_name(Kernel(d.kernel)) + ", T " + gr::fmt(d.threshold) + ", step " + gr::fmt(d.step) + ", " +
                 std::to_string(d.cells) + "³ cells" +
                 (m ? ", " + std::to_string(m->soup.n_faces()) + " triangles" : std::string()) +
                 (issues.any() ? " | " + issues.str() : "");
@@ -104,15 +110,32 @@ gr::Frame draw(const Demo& d) {
 }
 
 bool on_key(Demo& d, int key) {
-    if (key == 'N') d.step = (d.step + 1) % 48;
-    if (key == 'B') d.step = (d.step + 47) % 48;
-    if (key == 'K') d.kernel = Kernel((int(d.kernel) + 1) % 3);
+    if (key == 'N') d.step = std::fmod(std::floor(d.step) + 1, 48.0);
+    if (key == 'B') d.step = std::fmod(std::ceil(d.step) + 47, 48.0);
+    if (key == ' ') d.playing = !d.playing, d.play_from = -1;
+    if (key == 'K') d.kernel = (d.kernel + 1) % 3;
     if (key == '[') d.threshold = std::max(0.05, d.threshold - 0.05);
     if (key == ']') d.threshold = std::min(0.95, d.threshold + 0.05);
     if (key == '=' || key == '+') d.cells = std::min(128, d.cells + 8);
     if (key == '-') d.cells = std::max(8, d.cells - 8);
     if (key == 'W') d.wire = !d.wire;
     return false;
+}
+
+// The animation: while playing, the time runs at kStepsPerSecond from where it was.
+bool animate(Demo& d, double seconds) {
+    if (!d.playing) return false;
+    if (d.play_from < 0) d.play_from = seconds - d.step / kStepsPerSecond;
+    d.step = std::fmod((seconds - d.play_from) * kStepsPerSecond, 48.0);
+    return true;
+}
+
+std::vector<gr::Slider> sliders(Demo& d) {
+    std::vector<gr::Slider> s{gr::choice("kernel", d.kernel, {"Blinn", "Nishimura", "Wyvill"}),
+                              gr::slider("T", d.threshold, 0.05, 0.95, 0.01), gr::slider("cells", d.cells, 8, 128),
+                              gr::slider("time", d.step, 0.0, 48.0, 0.25)};
+    s[2].live = false;  // a finer lattice is slower: polygonized when released
+    return s;
 }
 
 // ---- figures --------------------------------------------------------------------------------------------------
@@ -349,23 +372,25 @@ int main(int argc, char** argv) {
     program.cli().add_option("--cells", d.cells, "Lattice cells along the box side")->capture_default_str()->check(CLI::Range(4, 256));
     program.cli().add_option("--sequence", sequence, "Write the 48 animation frames as PNGs into this folder");
     if (const auto status = program.parse(argc, argv)) return *status;
-    d.kernel = Kernel(kernel);
+    d.kernel = kernel;
     return program.run([&] {
         if (!program.figures().empty()) return render_figures(program.figure_writer());
         if (!sequence.empty()) {
             std::filesystem::create_directories(sequence);
-            for (d.step = 0; d.step < 48; ++d.step) {
+            for (int step = 0; step < 48; ++step) {
+                d.step = step;
                 const gr::Frame fr = draw(d);
                 char name[32];
-                std::snprintf(name, sizeof name, "frame_%02d.png", d.step);
+                std::snprintf(name, sizeof name, "frame_%02d.png", step);
                 gr::render_image(fr.scene, fr.camera, program.width(), program.height()).write_png(std::filesystem::path(sequence) / name);
             }
             std::printf("48 frames written to %s\n", sequence.c_str());
             return 0;
         }
-        if (!program.png().empty()) return program.write_png(draw(d));
         return program.show({.title = "geolab demo 04: blobby objects",
                              .draw = [&] { return draw(d); },
-                             .key = [&](int key) { return on_key(d, key); }});
+                             .key = [&](int key) { return on_key(d, key); },
+                             .sliders = [&] { return sliders(d); },
+                             .animate = [&](double seconds) { return animate(d, seconds); }});
     });
 }

@@ -1,8 +1,10 @@
-// Lab 05 demo: Bézier curves and the Utah teapot. Curve mode: the de Casteljau construction at a t-slider,
-// the two halves of the subdivision, the hodograph beside the curve; click a control point to select it, click
-// elsewhere to move it there (the plane z = 0). Continuity mode: C⁰, G¹, C¹ and C² joints side by side. Teapot
-// mode: the 32 patches tessellated with their control nets. Glyph mode: a word from DejaVu Sans with its control
-// points. Headless: --png FILE renders the current view; --figures DIR renders the handout's figures.
+// Lab 05 demo: Bézier curves and the Utah teapot. Curve mode: the de Casteljau construction at the t slider,
+// the two halves of the subdivision, the hodograph beside the curve, all following the control points as you drag
+// them (in the plane z = 0). Continuity mode: C⁰, G¹, C¹ and C² joints side by side. Teapot mode: the 32 patches
+// tessellated with their control nets. Glyph mode: a word from DejaVu Sans with its control points. Patch mode: one
+// bicubic patch whose 16 control points you drag (in the view plane), with the point S(u, v) of the u and v sliders,
+// its normal and the two iso-curves through it. Headless: --png FILE renders the current view; --figures DIR
+// renders the handout's figures.
 //
 // The same file runs against the student's code and the reference: it calls only the lab's public API and lib.
 #include <algorithm>
@@ -28,24 +30,35 @@ using glm::vec3;
 
 const char* kKeys =
     "Window keys:\n"
-    "  1 2 3 4         curve / continuity / teapot / glyphs\n"
+    "  1 2 3 4 5       curve / continuity / teapot / glyphs / patch\n"
+    "  drag a point    move a control point (curve: in z = 0; patch: in the view plane); elsewhere: orbit\n"
+    "  sliders         t (curve), u and v (patch), top left\n"
     "  A D             t − 0.05, t + 0.05 (the construction point)\n"
     "  B               subdivision halves at t on/off (instead of the construction)\n"
     "  H               hodograph on/off\n"
     "  W               teapot control nets on/off\n"
-    "  click           select the nearest control point; click again elsewhere to move it there (z = 0)\n"
     "  Home, S, Esc    re-frame, screenshot (out/screenshots/), quit";
 
 const vec3 kGrey{0.55f, 0.55f, 0.6f}, kBlue{0.1f, 0.3f, 0.85f}, kRed{0.85f, 0.1f, 0.1f}, kGreen{0.1f, 0.6f, 0.2f},
     kOrange{0.95f, 0.55f, 0.05f}, kBlack{0.05f, 0.05f, 0.05f};
+
+// A bicubic patch over [-3, 3]² with a bump: the control points P_ij at (2i − 3, 2j − 3, h_ij).
+geolab::BezierPatch start_patch() {
+    geolab::BezierPatch S{3, 3, {}};
+    const double h[4][4] = {{0, 0.5, 0.5, 0}, {0.5, 2.5, 1.5, 0.5}, {0.5, 1.5, -1.0, 0}, {0, 0.5, 0, -0.5}};
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) S.points.push_back({2.0 * i - 3.0, 2.0 * j - 3.0, h[i][j]});
+    return S;
+}
 
 struct Demo {
     int mode = 1;
     Poly3 P{{-3, -1, 0}, {-2, 2.5, 0}, {1.5, 3, 0}, {3, -0.5, 0}};
     double t = 0.3;
     bool halves = false, hodo = false, nets = true;
-    int selected = -1;
-    std::string word = "Bézier";
+    int selected = -1;  // the control point being dragged (curve or patch)
+    geolab::BezierPatch patch = start_patch();
+    double u = 0.35, v = 0.6;
 };
 
 std::vector<vec3> to_f(const Poly3& P, dvec3 offset = dvec3(0.0)) {
@@ -204,8 +217,56 @@ gr::Frame draw_glyphs(const std::u32string& text, bool points) {
     return fr;
 }
 
+// One bicubic patch: your tessellation, the control net, S(u, v) with its normal and the iso-curves through it.
+gr::Frame draw_patch(const Demo& d) {
+    gr::Frame fr;
+    gr::Issues issues;
+    const geolab::BezierPatch& S = d.patch;
+    gr::attempt(issues, "tessellate_patches", [&] {
+        const bz::PatchMesh m = bz::tessellate_patches({S}, 24, 1e-9, false);
+        fr.scene.add_mesh(m.soup, {.color = {0.85f, 0.8f, 0.7f}, .smooth = true, .opacity = 0.85f});
+    });
+    std::vector<vec3> net;
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) {
+            const dvec3 p = S.points[std::size_t(4 * i + j)];
+            if (i < 3) net.push_back(vec3(p)), net.push_back(vec3(S.points[std::size_t(4 * (i + 1) + j)]));
+            if (j < 3) net.push_back(vec3(p)), net.push_back(vec3(S.points[std::size_t(4 * i + j + 1)]));
+        }
+    fr.scene.add_lines(net, kGrey, 1.5f);
+    std::vector<vec3> pts, cols;
+    for (std::size_t k = 0; k < S.points.size(); ++k) {
+        pts.push_back(vec3(S.points[k]));
+        cols.push_back(int(k) == d.selected ? kOrange : kBlack);
+    }
+    fr.scene.add_points(pts, cols, 10.0f);
+    std::string at;
+    gr::attempt(issues, "patch_point", [&] {
+        Poly3 iso_u, iso_v;  // S(·, v) and S(u, ·)
+        for (int k = 0; k <= 64; ++k) {
+            iso_u.push_back(bz::patch_point(S, k / 64.0, d.v));
+            iso_v.push_back(bz::patch_point(S, d.u, k / 64.0));
+        }
+        fr.scene.add_polyline(to_f(iso_u), kBlue, 3.0f);
+        fr.scene.add_polyline(to_f(iso_v), kGreen, 3.0f);
+        const dvec3 p = bz::patch_point(S, d.u, d.v);
+        fr.scene.add_points({vec3(p)}, kRed, 14.0f);
+        at = "S(" + gr::fmt(d.u, 2) + ", " + gr::fmt(d.v, 2) + ") = " + gr::fmt(p);
+        gr::attempt(issues, "patch_normal", [&] {
+            gr::Segments seg;
+            gr::add_normal(seg, p, bz::patch_normal(S, d.u, d.v), 1.5, kRed);
+            seg.draw(fr.scene, 3.0f);
+        });
+    });
+    fr.camera = gr::fit(gr::camera_from(fr.scene.bounds(), {0.9, -1.3, 1.1}, {0, 0, 1}), fr.scene, 4.0 / 3.0);
+    fr.status = "bicubic patch: drag its control points; u-curve blue, v-curve green, normal red" +
+                (at.empty() ? "" : "; " + at) + (issues.any() ? " | " + issues.str() : "");
+    return fr;
+}
+
 gr::Frame draw(const Demo& d) {
     if (d.mode == 2) return draw_continuity_panel(3);
+    if (d.mode == 5) return draw_patch(d);
     if (d.mode == 3) return draw_teapot(d);
     if (d.mode == 4) {
         std::u32string w;
@@ -216,15 +277,18 @@ gr::Frame draw(const Demo& d) {
     gr::Issues issues;
     draw_curve(fr, issues, d, d.hodo);
     fr.camera = flat_camera(fr.scene, 4.0 / 3.0);
-    fr.status = "degree " + std::to_string(d.P.size() - 1) + " curve, t = " + gr::fmt(d.t, 2) +
+    std::string ctrl;
+    for (const dvec3& p : d.P) ctrl += " (" + gr::fmt(p.x, 3) + ", " + gr::fmt(p.y, 3) + ")";
+    fr.status = "degree " + std::to_string(d.P.size() - 1) + " curve," + ctrl + ", t = " + gr::fmt(d.t, 2) +
                 (d.halves ? "; halves green/orange" : "") + (d.hodo ? "; hodograph (÷3) right, C'(t) red" : "") +
                 (issues.any() ? " | " + issues.str() : "");
     return fr;
 }
 
 bool on_key(Demo& d, int key) {
-    if (key >= '1' && key <= '4') {
+    if (key >= '1' && key <= '5') {
         d.mode = key - '0';
+        d.selected = -1;
         return true;
     }
     if (key == 'A') d.t = std::max(0.0, d.t - 0.05);
@@ -238,27 +302,31 @@ bool on_key(Demo& d, int key) {
     return false;
 }
 
-bool on_pick(Demo& d, const gr::Ray& ray) {
-    if (d.mode != 1) return false;
-    // the nearest control point to the ray
-    int best = -1;
-    double bd = 0.25;
-    for (std::size_t k = 0; k < d.P.size(); ++k) {
-        const dvec3 o(ray.origin), dir = glm::normalize(dvec3(ray.direction));
-        const dvec3 w = d.P[k] - o;
-        const double dist = glm::length(w - glm::dot(w, dir) * dir);
-        if (dist < bd) bd = dist, best = int(k);
+// Dragging a control point: the curve's in the plane z = 0, the patch's in the view plane.
+bool on_drag(Demo& d, const gr::Drag& g) {
+    if (d.mode != 1 && d.mode != 5) return false;
+    std::vector<dvec3>& pts = d.mode == 1 ? d.P : d.patch.points;
+    if (g.phase == gr::MouseEvent::Phase::press) {
+        const auto k = g.nearest(pts);
+        d.selected = k ? int(*k) : -1;
+        return k.has_value();
     }
-    if (best >= 0) {
-        d.selected = best;
-        return false;
+    if (d.selected >= 0 && d.selected < int(pts.size())) {
+        dvec3& p = pts[std::size_t(d.selected)];
+        if (d.mode == 1) {
+            if (const auto q = g.on_plane(dvec3(0.0), dvec3(0, 0, 1))) p = dvec3(q->x, q->y, 0.0);
+        } else {
+            p = g.on_view_plane(p);
+        }
     }
-    if (d.selected >= 0 && std::abs(ray.direction.z) > 1e-6) {  // move it to where the ray meets z = 0
-        const double s = -ray.origin.z / ray.direction.z;
-        d.P[d.selected] = dvec3(ray.origin) + s * dvec3(ray.direction);
-        d.P[d.selected].z = 0;
-    }
+    if (g.phase == gr::MouseEvent::Phase::release) d.selected = -1;
     return false;
+}
+
+std::vector<gr::Slider> sliders(Demo& d) {
+    if (d.mode == 1) return {gr::slider("t", d.t, 0.0, 1.0, 0.01)};
+    if (d.mode == 5) return {gr::slider("u", d.u, 0.0, 1.0, 0.01), gr::slider("v", d.v, 0.0, 1.0, 0.01)};
+    return {};
 }
 
 int render_figures(gr::FigureWriter w) {
@@ -320,18 +388,18 @@ int main(int argc, char** argv) {
                             kKeys);
     int mode = 1;
     double t = 0.3;
-    program.cli().add_option("--mode", mode, "1 curve, 2 continuity, 3 teapot, 4 glyphs")->capture_default_str();
+    program.cli().add_option("--mode", mode, "1 curve, 2 continuity, 3 teapot, 4 glyphs, 5 patch")->capture_default_str();
     program.cli().add_option("--t", t, "the construction parameter in [0, 1]")->capture_default_str();
     if (const auto status = program.parse(argc, argv)) return *status;
     return program.run([&] {
         if (!program.figures().empty()) return render_figures(program.figure_writer());
         Demo d;
-        d.mode = std::clamp(mode, 1, 4);
+        d.mode = std::clamp(mode, 1, 5);
         d.t = std::clamp(t, 0.0, 1.0);
-        if (!program.png().empty()) return program.write_png(draw(d));
         return program.show({.title = "geolab demo 05: Bézier curves and surfaces",
                              .draw = [&] { return draw(d); },
                              .key = [&](int key) { return on_key(d, key); },
-                             .pick = [&](const gr::Ray& ray) { return on_pick(d, ray); }});
+                             .sliders = [&] { return sliders(d); },
+                             .drag = [&](const gr::Drag& g) { return on_drag(d, g); }});
     });
 }

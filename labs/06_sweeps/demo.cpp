@@ -1,6 +1,6 @@
-// Lab 06 demo: sweep representations. Four views, switched with the keys 1-4: (1) a profile swept along an
-// editable curve, Frenet frames (left) beside rotation-minimizing frames (right), frames drawn as N (red) and
-// B (blue) ticks; (2) lathe mode: a vase turned from a profile; (3) extrude mode: twist and scale; (4) the swept
+// Lab 06 demo: sweep representations. Four views, switched with the keys 1-4: (1) a profile swept along a curve
+// you edit by dragging its control points, Frenet frames (left) beside rotation-minimizing frames (right), frames
+// drawn as N (red) and B (blue) ticks; (2) lathe mode: a vase turned from a profile; (3) extrude mode: twist and scale; (4) the swept
 // trefoil knot. Headless: --png FILE renders the current view; --figures DIR renders the handout's figures.
 //
 // The same file runs against the student's code and the reference: it calls only the lab's public API and lib.
@@ -28,6 +28,8 @@ using glm::vec3;
 const char* kKeys =
     "Window keys:\n"
     "  1 2 3 4         views: sweep along the editable curve (Frenet | RMF), lathe, extrude, trefoil\n"
+    "  drag a point    move a control point of the curve in the view plane (view 1); elsewhere: orbit\n"
+    "  sliders         path samples (views 1, 4), twist (view 3), top left\n"
     "  Tab             select the next control point of the curve (view 1)\n"
     "  J L / I K / U O move the selected control point along x / y / z (view 1)\n"
     "  F               frames on/off;  W  wireframe on/off\n"
@@ -50,6 +52,7 @@ struct Demo {
     int samples = 80;
     double twist = 1.5;
     bool frames = true, wire = false;
+    double shift = 0.0;  // while a control point is dragged: the copies' offset, frozen (0: follows the curve)
 };
 
 // Catmull–Rom through the control points (ends repeated), n samples with tangents of the spline.
@@ -113,13 +116,20 @@ void draw_path(gr::Frame& fr, const Path& p, dvec3 shift) {
     fr.scene.add_polyline(pts, kCurve, 2.0f, p.closed);
 }
 
-// View 1: the same profile along the same curve with Frenet frames (left) and RMF (right).
-gr::Frame draw_sweep(const Demo& d, const Path& path, const Profile& prof, double frame_len, const char* what) {
-    gr::Frame fr;
-    gr::Issues issues;
+// How far the Frenet (left) and RMF (right) copies of a path sit from the middle: beside each other.
+double copy_shift(const Path& path) {
     double width = 0;
     for (auto q : path.points) width = std::max(width, std::abs(q.x));
-    const dvec3 left{-(width + 1.5), 0, 0}, right{width + 1.5, 0, 0};
+    return width + 1.5;
+}
+
+// View 1: the same profile along the same curve with Frenet frames (left) and RMF (right).
+gr::Frame draw_sweep(const Demo& d, const Path& path, const Profile& prof, double frame_len, const char* what,
+                     double shift = 0.0, float opacity = 1.0f) {
+    gr::Frame fr;
+    gr::Issues issues;
+    if (!(shift > 0)) shift = copy_shift(path);  // (0: beside each other)
+    const dvec3 left{-shift, 0, 0}, right{shift, 0, 0};
     draw_path(fr, path, left);
     draw_path(fr, path, right);
     gr::attempt(issues, "frenet_frames", [&] {
@@ -130,14 +140,16 @@ gr::Frame draw_sweep(const Demo& d, const Path& path, const Profile& prof, doubl
         for (const Frame& x : f) ok = ok && glm::length(x.N) > 0.5;
         if (ok)
             gr::attempt(issues, "sweep", [&] {
-                fr.scene.add_mesh(moved(sweep(prof, path, f), left), {.color = kSurface, .smooth = false, .wireframe = d.wire});
+                fr.scene.add_mesh(moved(sweep(prof, path, f), left),
+                                  {.color = kSurface, .smooth = false, .wireframe = d.wire, .opacity = opacity});
             });
     });
     gr::attempt(issues, "rotation_minimizing_frames", [&] {
         const RmfResult r = rotation_minimizing_frames(path, path.tangents[0].z < 0.9 ? dvec3(0, 0, 1) : dvec3(1, 0, 0));
         if (d.frames) draw_frames(fr, path, r.frames, frame_len, 2, right);
         gr::attempt(issues, "sweep", [&] {
-            fr.scene.add_mesh(moved(sweep(prof, path, r.frames), right), {.color = kSurface, .smooth = false, .wireframe = d.wire});
+            fr.scene.add_mesh(moved(sweep(prof, path, r.frames), right),
+                              {.color = kSurface, .smooth = false, .wireframe = d.wire, .opacity = opacity});
         });
     });
     std::string warn;
@@ -155,18 +167,20 @@ gr::Frame draw_sweep(const Demo& d, const Path& path, const Profile& prof, doubl
 
 gr::Frame draw_editable(const Demo& d) {
     const Path path = spline_path(d.ctrl, d.samples);
-    gr::Frame fr = draw_sweep(d, path, {circle_loop({0, 0}, 0.25, 12), {}}, 0.5, "editable curve");
-    double width = 0;
-    for (auto q : path.points) width = std::max(width, std::abs(q.x));
-    for (double s : {-(width + 1.5), width + 1.5}) {
+    // the tubes translucent, so that the control points inside them show
+    gr::Frame fr = draw_sweep(d, path, {circle_loop({0, 0}, 0.25, 12), {}}, 0.5, "editable curve", std::abs(d.shift), 0.45f);
+    const double shift = d.shift != 0 ? std::abs(d.shift) : copy_shift(path);
+    for (double s : {-shift, shift}) {
         std::vector<vec3> pts, cols;
         for (std::size_t i = 0; i < d.ctrl.size(); ++i) {
             pts.push_back(vec3(d.ctrl[i] + dvec3(s, 0, 0)));
             cols.push_back(static_cast<int>(i) == d.selected ? kSel : kCtrl);
         }
-        fr.scene.add_points(pts, cols, 10.0f);
+        fr.scene.add_points(pts, cols, 14.0f);
     }
-    fr.camera = gr::camera_from(fr.scene.bounds(), {0.15, -1, 0.55}, {0, 0, 1});
+    fr.camera = gr::fit(gr::camera_from(fr.scene.bounds(), {0.15, -1, 0.55}, {0, 0, 1}), fr.scene, 4.0 / 3.0);
+    const std::size_t k = static_cast<std::size_t>(d.selected);
+    fr.status += " | control point " + std::to_string(k) + " (green) at " + gr::fmt(d.ctrl[k]);
     return fr;
 }
 
@@ -271,6 +285,35 @@ bool on_key(Demo& d, int key) {
     return false;
 }
 
+// Dragging a control point of the editable curve, on either copy, in the view plane; the copies stay where they
+// were until the release.
+bool on_drag(Demo& d, const gr::Drag& g) {
+    if (d.view != 1) return false;
+    const std::size_t n = d.ctrl.size();
+    if (g.phase == gr::MouseEvent::Phase::press) {
+        const double shift = copy_shift(spline_path(d.ctrl, d.samples));
+        std::vector<dvec3> both;
+        for (double s : {-shift, shift})
+            for (const dvec3& c : d.ctrl) both.push_back(c + dvec3(s, 0, 0));
+        const auto k = g.nearest(both);
+        if (!k) return false;
+        d.selected = int(*k % n);
+        d.shift = *k < n ? -shift : shift;  // signed: which copy holds the cursor
+        return true;
+    }
+    dvec3& c = d.ctrl[std::size_t(d.selected)];
+    const dvec3 offset(d.shift, 0, 0);
+    c = g.on_view_plane(c + offset) - offset;
+    if (g.phase == gr::MouseEvent::Phase::release) d.shift = 0.0;
+    return false;
+}
+
+std::vector<gr::Slider> sliders(Demo& d) {
+    if (d.view == 1 || d.view == 4) return {gr::slider("samples", d.samples, 10, 2000, true)};
+    if (d.view == 3) return {gr::slider("twist", d.twist, -20.0, 20.0, 0.1)};
+    return {};
+}
+
 // The helix: one turn, and a planar S-curve with an inflection (y = sin x), for Frenet vs RMF.
 Path s_curve(int n) {
     std::vector<dvec3> pts;
@@ -338,9 +381,10 @@ int main(int argc, char** argv) {
         if (!program.figures().empty()) return render_figures(program.figure_writer());
         Demo d;
         d.view = view;
-        if (!program.png().empty()) return program.write_png(draw(d));
         return program.show({.title = "geolab demo 06: sweeps",
                              .draw = [&] { return draw(d); },
-                             .key = [&](int key) { return on_key(d, key); }});
+                             .key = [&](int key) { return on_key(d, key); },
+                             .sliders = [&] { return sliders(d); },
+                             .drag = [&](const gr::Drag& g) { return on_drag(d, g); }});
     });
 }

@@ -25,6 +25,7 @@ const char* kKeys =
     "Window keys:\n"
     "  1 .. 9          cycle the operation (union, intersection, difference) of inner node 1 .. 9\n"
     "                  (inner nodes numbered in the tree's order; the status line lists them)\n"
+    "  sliders         each inner node's operation, the rays per axis or the resolution (top left)\n"
     "  M               ray-cast points (the interval lists) / polygonized mesh (the SDF)\n"
     "  + / -           finer / coarser (rays per axis, or polygonizer resolution)\n"
     "  Home, S, Esc    re-frame, screenshot (out/screenshots/), quit";
@@ -137,6 +138,28 @@ bool on_key(Demo& d, int key) {
         d.res = std::max(d.res / 2, 8);
     }
     return false;
+}
+
+// The sliders: each inner node's operation (up to 9), and the ray grid or the polygonizer's resolution. Redrawn
+// when released (a ray-cast view takes a while).
+std::vector<gr::Slider> sliders(Demo& d) {
+    static const Op kOps[3] = {Op::unite, Op::intersect, Op::subtract};
+    std::vector<gr::Slider> s;
+    const auto in = d.inner();
+    for (std::size_t k = 0; k < in.size() && k < 9; ++k) {
+        Node& n = d.tree.nodes[std::size_t(in[k])];
+        if (n.op == Op::blend) continue;
+        gr::Slider op;
+        op.label = "node " + std::to_string(k + 1);
+        op.min = 0, op.max = 2, op.step = 1;
+        op.get = [&n] { return n.op == Op::unite ? 0.0 : n.op == Op::intersect ? 1.0 : 2.0; };
+        op.set = [&n](double v) { n.op = kOps[std::clamp(int(std::lround(v)), 0, 2)]; };
+        op.format = [](double v) { return std::string(v < 0.5 ? "union" : v < 1.5 ? "intersection" : "difference"); };
+        s.push_back(op);
+    }
+    s.push_back(d.mesh ? gr::slider("resolution", d.res, 8, 256, true) : gr::slider("rays", d.rays, 20, 640, true));
+    for (gr::Slider& x : s) x.live = false;
+    return s;
 }
 
 // ---- figures: images drawn pixel by pixel ----------------------------------------------------------------
@@ -335,9 +358,9 @@ int main(int argc, char** argv) {
             d.name = scene;
         }
         d.mesh = mesh;
-        if (!program.png().empty()) return program.write_png(draw(d));
         return program.show({.title = "geolab demo 07: CSG",
                              .draw = [&] { return draw(d); },
-                             .key = [&](int key) { return on_key(d, key); }});
+                             .key = [&](int key) { return on_key(d, key); },
+                             .sliders = [&] { return sliders(d); }});
     });
 }

@@ -1,6 +1,7 @@
-// Lab 08 demo: a mesh voxelized at a resolution chosen with + / −, its surface or solid voxels drawn as cubes (only
-// the faces between a set and an unset voxel), cut by a section plane z = const that [ and ] move. Headless:
-// --png FILE renders the current view; --figures DIR renders the handout's figures.
+// Lab 08 demo: a mesh voxelized at a resolution chosen with a slider (or + / −), its surface or solid voxels drawn as
+// cubes (only the faces between a set and an unset voxel), cut by a section plane z = const that a second slider (or
+// [ and ]) moves; the plane's outline is drawn. Headless: --png FILE renders the current view; --figures DIR renders
+// the handout's figures.
 //
 // The same file runs against the student's code and the reference: it calls only the lab's public API and lib.
 // A function that throws geolab::NotImplemented is named in the status line; what does not need it still shows.
@@ -24,9 +25,11 @@ using glm::vec3;
 const vec3 kVoxel{0.80f, 0.80f, 0.83f};    // voxel faces: grey
 const vec3 kCut{0.95f, 0.55f, 0.10f};      // faces on the section plane: orange
 const vec3 kMeshWire{0.15f, 0.35f, 0.85f};  // the input mesh's edges: blue
+const vec3 kPlane{0.85f, 0.35f, 0.05f};     // the section plane's outline: dark orange
 
 const char* kKeys =
     "Window keys:\n"
+    "  sliders         resolution (8 .. 256, voxelized when released), section plane height (top left)\n"
     "  + / -           resolution x 2 / x 1/2 (8 .. 256)\n"
     "  [ / ]           move the section plane down / up one voxel layer\n"
     "  V               surface / solid voxels\n"
@@ -72,31 +75,52 @@ PolygonSoup voxel_faces(const BitGrid& g, const Grid& grid, std::int64_t k_cut, 
     return s;
 }
 
+// The voxels of one resolution and mode, kept while only the section plane moves.
+struct Voxels {
+    std::int64_t res = 0;
+    bool solid = false;
+    BitGrid grid;
+    std::string method;
+    gr::Issues issues;
+};
+
 struct Demo {
     PolygonSoup mesh;
     std::string name;
     std::int64_t res = 64;
     bool solid = true, show_mesh = false;
     double cut = 0.55;  // the section plane's height, as a fraction of the grid
+    bool outline = true;  // draw the section plane's outline (the window; not the handout's figures)
+    int res_slider = 64;  // the resolution slider's value (applied to res when released)
+    mutable Voxels cache;
 };
+
+// Your voxelization of the demo's mesh at its resolution and mode (computed once for each).
+const Voxels& voxels(const Demo& d, const Grid& grid) {
+    if (d.cache.res == d.res && d.cache.solid == d.solid) return d.cache;
+    Voxels v{d.res, d.solid, {}, {}, {}};
+    const PolygonSoup u = to_grid_units(d.mesh, grid);
+    gr::attempt(v.issues, d.solid ? "voxelize_solid" : "voxelize_surface", [&] {
+        if (d.solid) {
+            const SolidResult r = voxelize_solid(u, grid.dims, 2);
+            v.grid = r.grid;
+            v.method = (r.method == SolidMethod::parity ? "parity" : "flood fill (open mesh)");
+        } else {
+            v.grid = voxelize_surface(u, grid.dims, 2);
+            v.method = "surface";
+        }
+    });
+    d.cache = std::move(v);
+    return d.cache;
+}
 
 gr::Frame draw(const Demo& d, float yaw = 30.0f, float pitch = 25.0f) {
     gr::Frame fr;
-    gr::Issues issues;
     const Grid grid = fit_grid(d.mesh, d.res, 1);
-    const PolygonSoup u = to_grid_units(d.mesh, grid);
-    std::string counts;
-    BitGrid g;
-    gr::attempt(issues, d.solid ? "voxelize_solid" : "voxelize_surface", [&] {
-        if (d.solid) {
-            const SolidResult r = voxelize_solid(u, grid.dims, 2);
-            g = r.grid;
-            counts = (r.method == SolidMethod::parity ? "parity" : "flood fill (open mesh)");
-        } else {
-            g = voxelize_surface(u, grid.dims, 2);
-            counts = "surface";
-        }
-    });
+    const Voxels& vox = voxels(d, grid);
+    gr::Issues issues = vox.issues;
+    const BitGrid& g = vox.grid;
+    std::string counts = g.words.empty() ? "no voxels" : vox.method;
     const auto k_cut = std::int64_t(d.cut * double(d.res) + 0.5);
     if (!g.words.empty()) {
         std::vector<vec3> colors;
@@ -107,6 +131,11 @@ gr::Frame draw(const Demo& d, float yaw = 30.0f, float pitch = 25.0f) {
         counts += ", " + std::to_string(n) + " voxels";
     }
     if (d.show_mesh || g.words.empty()) fr.scene.add_mesh(d.mesh, {.color = {0.9f, 0.9f, 0.95f}, .smooth = false, .wireframe = true, .wire_color = kMeshWire, .opacity = g.words.empty() ? 1.0f : 0.25f});
+    if (d.outline) {  // the section plane: its rectangle across the grid
+        const double z = grid.origin.z + grid.voxel_size * double(std::min(k_cut, grid.dims.nz));
+        const glm::dvec3 lo = grid.origin, hi = grid.origin + grid.voxel_size * glm::dvec3(double(grid.dims.nx), double(grid.dims.ny), 0.0);
+        fr.scene.add_polyline({vec3(lo.x, lo.y, z), vec3(hi.x, lo.y, z), vec3(hi.x, hi.y, z), vec3(lo.x, hi.y, z)}, kPlane, 2.0f, true);
+    }
     fr.camera = gr::whole(fr.scene, 4.0 / 3.0, yaw, pitch);
     fr.status = d.name + " at " + std::to_string(d.res) + "³: " + counts + "; section at layer " + std::to_string(k_cut) +
                 (issues.any() ? " | " + issues.str() : "");
@@ -116,11 +145,22 @@ gr::Frame draw(const Demo& d, float yaw = 30.0f, float pitch = 25.0f) {
 bool on_key(Demo& d, int key) {
     if (key == '+' || key == '=') d.res = std::min<std::int64_t>(256, d.res * 2);
     if (key == '-') d.res = std::max<std::int64_t>(8, d.res / 2);
+    d.res_slider = int(d.res);
     if (key == '[') d.cut = std::max(0.0, d.cut - 1.0 / double(d.res));
     if (key == ']') d.cut = std::min(1.0, d.cut + 1.0 / double(d.res));
     if (key == 'V') d.solid = !d.solid;
     if (key == 'M') d.show_mesh = !d.show_mesh;
     return key == '+' || key == '=' || key == '-';
+}
+
+// The resolution (logarithmic, 8 .. 256; voxelized when released: a fine grid takes a while) and the section
+// plane's height (0 .. 1 of the grid, redrawn live from the kept voxels).
+std::vector<gr::Slider> sliders(Demo& d) {
+    gr::Slider res = gr::slider("resolution", d.res_slider, 8, 256, true);
+    res.set = [&d](double v) { d.res_slider = int(std::lround(v)), d.res = d.res_slider; };
+    res.live = false;
+    res.reframe = true;
+    return {res, gr::slider("section", d.cut, 0.0, 1.0, 0.01)};
 }
 
 PolygonSoup load(const std::string& name) {
@@ -137,6 +177,7 @@ int render_figures(gr::FigureWriter w) {
         return w.finish();
     }
     Demo d{load(*bunny), *bunny};
+    d.outline = false;
     const int pw = 480, ph = 400;
     // surface vs solid, cut at the middle
     d.res = 64;
@@ -262,9 +303,10 @@ int main(int argc, char** argv) {
         if (!program.figures().empty()) return render_figures(program.figure_writer());
         Demo d{load(mesh), mesh};
         d.res = res;
-        if (!program.png().empty()) return program.write_png(draw(d));
+        d.res_slider = int(res);
         return program.show({.title = "geolab demo 08: voxelization",
                              .draw = [&] { return draw(d); },
-                             .key = [&](int key) { return on_key(d, key); }});
+                             .key = [&](int key) { return on_key(d, key); },
+                             .sliders = [&] { return sliders(d); }});
     });
 }

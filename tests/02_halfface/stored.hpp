@@ -57,7 +57,7 @@ void flatten(const T& x, std::vector<std::uint32_t>& out) {
         for (const auto& e : x) flatten(e, out);
     } else if constexpr (std::is_same_v<T, glm::dvec3>) {
         flatten(x.x, out), flatten(x.y, out), flatten(x.z, out);
-    } else if constexpr (std::is_same_v<T, double> || std::is_same_v<T, std::uint64_t>) {
+    } else if constexpr (std::is_same_v<T, double> || (std::is_integral_v<T> && sizeof(T) == 8)) {
         std::uint64_t b;
         std::memcpy(&b, &x, 8);
         out.push_back(std::uint32_t(b)), out.push_back(std::uint32_t(b >> 32));
@@ -80,7 +80,7 @@ void unflatten(T& x, std::span<const std::uint32_t> in, std::size_t& pos) {
         for (auto& e : x) unflatten(e, in, pos);
     } else if constexpr (std::is_same_v<T, glm::dvec3>) {
         unflatten(x.x, in, pos), unflatten(x.y, in, pos), unflatten(x.z, in, pos);
-    } else if constexpr (std::is_same_v<T, double> || std::is_same_v<T, std::uint64_t>) {
+    } else if constexpr (std::is_same_v<T, double> || (std::is_integral_v<T> && sizeof(T) == 8)) {
         const std::uint64_t lo = detail::take(in, pos), hi = detail::take(in, pos);
         const std::uint64_t b = lo | (hi << 32);
         std::memcpy(&x, &b, 8);

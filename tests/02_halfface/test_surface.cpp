@@ -5,7 +5,7 @@
 using namespace lab02;
 
 TEST_SUITE("Task 5: boundary surface") {
-    TEST_CASE("surface: a single tetrahedron gives 4 outward triangles" * geolab::points(3) *
+    TEST_CASE("surface: a single tetrahedron gives 4 outward triangles" * geolab::points(2) *
               geolab::builds_on("Task 2") *
               geolab::hint("One polygon per boundary half-face, its vertices reversed (the cell is on the other side).")) {
         const Mesh m = stored_mesh("single tet");
@@ -17,7 +17,7 @@ TEST_SUITE("Task 5: boundary surface") {
     }
 
     TEST_CASE("surface: every fixture's surface is closed / outward / a sphere / and encloses the cells' volume" *
-              geolab::points(3) * geolab::builds_on("Task 2") *
+              geolab::points(2) * geolab::builds_on("Task 2") *
               geolab::hint("Reverse each boundary half-face's loop; renumber the used vertices in increasing order.")) {
         for (const Fixture& f : stored_fixtures()) {
             INFO(describe(f));
@@ -35,7 +35,7 @@ TEST_SUITE("Task 5: boundary surface") {
         }
     }
 
-    TEST_CASE("surface: faces in half-face order / vertices renumbered in increasing mesh order" * geolab::points(3) *
+    TEST_CASE("surface: faces in half-face order / vertices renumbered in increasing mesh order" * geolab::points(2) *
               geolab::builds_on("Task 2") *
               geolab::hint("Polygon i is the i-th boundary half-face; soup vertex j is the j-th used mesh vertex.")) {
         for (const Fixture& f : stored_fixtures()) {

@@ -246,6 +246,41 @@ inline std::size_t crossed_edges(const Lattice& L, double iso) {
     return n;
 }
 
+// The tie rule's promises, checked exactly (lib's check_surface: zero-area faces by exact collinearity,
+// coincident vertices, edge pairing, self-intersections by exact predicates): closed, 2-manifold, outward, one
+// vertex per crossed edge, every vertex strictly inside its lattice edge (exactly two of its coordinates are
+// lattice coordinates origin + h·i). components 0: components and χ not checked.
+inline void check_tie_output(const McMesh& m, const Lattice& L, double iso, const std::string& what,
+                             std::size_t components, long chi) {
+    const geolab::SurfaceCheck sc = geolab::check_surface(m.soup);
+    CHECK_MESSAGE(sc.zero_area_faces == 0, what << ": " << sc.zero_area_faces << " zero-area triangle(s) (two vertices on "
+                                                "one point, or three on a line); " << sc.summary());
+    CHECK_MESSAGE(sc.coincident_vertices == 0, what << ": " << sc.coincident_vertices << " vertices at the position of "
+                                                    "another (vertices placed on a tie sample?); " << sc.summary());
+    CHECK_MESSAGE(sc.closed_manifold(), what << ": " << sc.summary());
+    CHECK_MESSAGE(m.soup.n_vertices() == crossed_edges(L, iso), what << ": " << crossed_edges(L, iso)
+                                                                   << " crossed edges, so as many vertices; got " << m.soup.n_vertices());
+    if (components > 0) {
+        CHECK_MESSAGE(sc.components == components, what << ": " << components << " component(s) expected; " << sc.summary());
+        CHECK_MESSAGE(sc.euler_characteristic == chi, what << ": χ = " << sc.euler_characteristic << ", expected " << chi);
+    }
+    for (std::size_t v = 0; v < m.soup.n_vertices(); ++v) {
+        const glm::dvec3 p = m.soup.positions[v];
+        int on_planes = 0;
+        for (int a = 0; a < 3; ++a) {
+            const double i0 = std::floor((p[a] - L.origin[a]) / L.h);
+            bool on = false;
+            for (double i = i0 - 1; i <= i0 + 2; ++i) on |= p[a] == L.origin[a] + L.h * i;
+            on_planes += on;
+        }
+        if (on_planes != 2) {
+            CHECK_MESSAGE(on_planes == 2, what << ": vertex " << str(p) << " is not strictly inside a lattice edge ("
+                                               << on_planes << " of its coordinates are lattice coordinates, 2 expected)");
+            break;
+        }
+    }
+}
+
 // Fields used by several tests.
 inline double sphere_f(const glm::dvec3& p, glm::dvec3 c, double r) { return glm::length(p - c) - r; }
 inline glm::dvec3 sphere_g(const glm::dvec3& p, glm::dvec3 c) {

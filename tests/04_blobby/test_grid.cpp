@@ -125,7 +125,7 @@ TEST_SUITE("Task 3: fast evaluation") {
                                                                       << str(at_centre.gradient));
     }
 
-    TEST_CASE("grid: evaluate equals field everywhere; inside and outside the grid" * geolab::points(3) *
+    TEST_CASE("grid: evaluate equals field everywhere; inside and outside the grid" * geolab::points(2) *
               geolab::builds_on("Task 1") *
               geolab::hint("Find p's cell by floor((p − origin)/cell); outside the grid F = T, ∇F = 0.")) {
         Rng rng(63);
@@ -158,6 +158,27 @@ TEST_SUITE("Task 3: fast evaluation") {
                                   str(s) << " at " << str(p) << ": expected ∇F = " << str(gw) << ", got " << str(got.gradient));
                 }
             }
+    }
+
+    TEST_CASE("grid: evaluate with large blobs (R from 1.2 to 3.2): every blob that reaches p counts" * geolab::points(1) *
+              geolab::hint("Skipping a listed blob must depend on its own R (a blob contributes 0 from r = R on), not on a "
+                           "fixed distance.")) {
+        Rng rng(67);
+        for (Kernel k : {Kernel::nishimura, Kernel::wyvill}) {
+            BlobScene s = random_scene(rng, k, 12);
+            for (Blob& b : s.blobs) b.center *= 4.0, b.radius *= 4.0;
+            const BlobGrid g = build_blob_grid(s, 0.0);
+            for (int m = 0; m < 300; ++m) {
+                const glm::dvec3 p = rng.point(-7, 7);
+                const FieldSample got = evaluate(s, g, p);
+                const double want = double(ref_value(s, p));
+                const glm::dvec3 gw = ref_gradient(s, p);
+                CHECK_MESSAGE(close(got.value, want, 1e-12, scale_of(s)),
+                              str(s) << " (radii 1.2 to 3.2) at " << str(p) << ": expected F = " << want << ", got " << got.value);
+                CHECK_MESSAGE(glm::length(got.gradient - gw) <= 1e-10 * 10 * scale_of(s),
+                              str(s) << " at " << str(p) << ": expected ∇F = " << str(gw) << ", got " << str(got.gradient));
+            }
+        }
     }
 
     TEST_CASE("grid: kernel evaluations per sample do not grow with the number of blobs" * geolab::points(3) *
@@ -259,6 +280,25 @@ TEST_SUITE("Task 3: fast evaluation") {
         CHECK_THROWS_AS(build_blob_grid(s, 1e-6), std::invalid_argument);
         CHECK_MESSAGE(sample_lattice(s, glm::dvec3(0.0), 0.1, glm::ivec3(2, 3, 2), e).values.size() == 12,
                       "n = (2, 3, 2) is the smallest lattice: 12 samples");
+        CHECK_MESSAGE(sample_lattice(s, glm::dvec3(0.0), 0.1, glm::ivec3(3, 2, 3), e).values.size() == 18,
+                      "n = (3, 2, 3): 18 samples (2 samples along y are allowed)");
+        CHECK_MESSAGE(sample_lattice(s, glm::dvec3(0.0), 0.1, glm::ivec3(3, 3, 2), e).values.size() == 18,
+                      "n = (3, 3, 2): 18 samples (2 samples along z are allowed)");
+        // More than 2^28 samples: refused before allocating (1024 · 1024 · 257 = 2^28 + 2^20).
+        CHECK_THROWS_AS(sample_lattice(s, glm::dvec3(0.0), 0.1, glm::ivec3(1024, 1024, 257), e), std::invalid_argument);
+        CHECK_THROWS_AS(sample_lattice(s, glm::dvec3(0.0), 0.1, glm::ivec3(257, 1024, 1024), e), std::invalid_argument);
+        // More than 2^24 cells (258³ for one blob of R = 1 in cells of 2/257): refused.
+        BlobScene one;
+        one.blobs.resize(1);
+        CHECK_THROWS_AS(build_blob_grid(one, 2.0 / 257), std::invalid_argument);
+        // Exactly 2^24 cells is allowed: blobs of R = 1 at x = 0 and x = 2^25 − 2 in cells of 2 give (2^24, 1, 1).
+        BlobScene wide;
+        wide.blobs.resize(2);
+        wide.blobs[1].center.x = 33554430.0;
+        const BlobGrid gw = build_blob_grid(wide, 2.0);
+        CHECK_MESSAGE(gw.dims == glm::ivec3(16777216, 1, 1), "two blobs 2^25 − 2 apart, cells of 2: exactly 2^24 cells "
+                                                             "(allowed), dims (16777216, 1, 1); got (" << gw.dims.x << ", "
+                                                             << gw.dims.y << ", " << gw.dims.z << ")");
         BlobScene bad = s;
         bad.blobs[1].radius = 0;
         CHECK_THROWS_AS(build_blob_grid(bad, 0.0), std::invalid_argument);

@@ -79,6 +79,9 @@ TEST_SUITE("Task 1: the kernels") {
             CHECK(std::isinf(support_radius(Kernel::blinn, b)));
             for (Kernel k : {Kernel::nishimura, Kernel::wyvill}) {
                 CHECK_MESSAGE(support_radius(k, b) == R, str(k) << " R = " << R << ": support radius " << support_radius(k, b));
+                CHECK_MESSAGE(density(k, b, R) == 0.0, str(k) << " R = " << R << ": D(R) must be exactly 0, got " << density(k, b, R));
+                CHECK_MESSAGE(density_derivative(k, b, R) == 0.0, str(k) << " R = " << R << ": D'(R) must be exactly 0, got "
+                                                                        << density_derivative(k, b, R));
                 CHECK_MESSAGE(density(k, b, R * 1.0000001) == 0.0, str(k) << ": D just beyond R must be 0");
                 CHECK_MESSAGE(density(k, b, 2 * R) == 0.0, str(k) << ": D(2R) must be 0");
                 CHECK_MESSAGE(density(k, b, 0.99 * R) > 0.0, str(k) << ": D(0.99 R) must be > 0 (support too small?)");

@@ -28,6 +28,29 @@ Lattice sphere_lattice(double r, int cells, glm::dvec3 c = glm::dvec3(0.0)) {
                            [=](const glm::dvec3& p) { return sphere_g(p, c); }, 1.0, cells);
 }
 
+// max(|x|, |y|, |z|) − 3 and a gradient of it.
+double box_f(const glm::dvec3& p) { return std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}) - 3; }
+glm::dvec3 box_g(const glm::dvec3& p) {
+    glm::dvec3 g(0.0);
+    const glm::dvec3 a = glm::abs(p);
+    const int i = a.x >= a.y && a.x >= a.z ? 0 : a.y >= a.z ? 1 : 2;
+    g[i] = p[i] >= 0 ? 1 : -1;
+    return g;
+}
+
+// The signed volume of the faces whose vertices all lie within `radius` of c, about c (no cancellation).
+LD centre_volume(const PolygonSoup& s, const glm::dvec3& c, double radius) {
+    LD v = 0;
+    for (std::size_t f = 0; f < s.n_faces(); ++f) {
+        const auto t = s.face(f);
+        const glm::dvec3 a = s.positions[t[0]] - c, b = s.positions[t[1]] - c, d = s.positions[t[2]] - c;
+        if (glm::length(a) > radius || glm::length(b) > radius || glm::length(d) > radius) continue;
+        v += LD(a.x) * (LD(b.y) * d.z - LD(b.z) * d.y) - LD(a.y) * (LD(b.x) * d.z - LD(b.z) * d.x) +
+             LD(a.z) * (LD(b.x) * d.y - LD(b.y) * d.x);
+    }
+    return v / 6;
+}
+
 Lattice torus_lattice(double h) {
     const int nxy = int(std::lround(1.25 / h)) + 1, nz = int(std::lround(0.25 / h)) + 1;
     return lattice_of([](const glm::dvec3& p) { return torus_f(p, 0.5, 0.1); },
@@ -54,30 +77,46 @@ TEST_SUITE("Task 4: marching cubes") {
         CHECK_MESSAGE(cube_index(f, 0.5) == 64, "only corner 6 below iso: index 64");
     }
 
-    TEST_CASE("marching cubes: edge_crossing interpolates linearly from p0 (t = (iso − f0)/(f1 − f0))" *
-              geolab::points(3) * geolab::hint("p0 + t (p1 − p0) with t = (iso − f0)/(f1 − f0): t = 0 at p0 when f0 == iso.")) {
+    TEST_CASE("marching cubes: edge_crossing interpolates linearly from p0 (t = (iso − f0)/(f1 − f0)); t clamped to "
+              "δ ≤ t ≤ 1 − δ" * geolab::points(3) *
+              geolab::hint("p0 + t (p1 − p0) with t = (iso − f0)/(f1 − f0), then t clamped to [crossing_margin, 1 − "
+                           "crossing_margin]: a tie end (f == iso) gives the point δ along the edge from it (the tie rule).")) {
         Rng rng(72);
-        for (int n = 0; n < 200; ++n) {
+        const LD delta = crossing_margin;
+        for (int n = 0; n < 300; ++n) {
             const glm::dvec3 p0 = rng.point(-3, 3), p1 = rng.point(-3, 3);
             const double iso = rng.uniform(-1, 1);
-            double f0 = iso - rng.uniform(0.001, 2), f1 = iso + rng.uniform(0.001, 2);
-            if (n % 2) std::swap(f0, f1);
-            const LD t = (LD(iso) - f0) / (LD(f1) - f0);
+            // every third edge has an end within 1e-5 of iso (t near 0 or 1: clamped when below δ)
+            const double near = n % 3 == 0 ? rng.uniform(0.0, 1e-5) : rng.uniform(0.001, 2);
+            double f0 = iso - near, f1 = iso + rng.uniform(0.001, 2);
+            if (n % 2) f0 = iso + near, f1 = iso - rng.uniform(0.001, 2);
+            if (n % 5 == 0) std::swap(f0, f1);
+            if ((f0 < iso) == (f1 < iso)) continue;  // f == iso: both outside
+            const LD t = std::clamp((LD(iso) - f0) / (LD(f1) - f0), delta, 1 - delta);
             const glm::dvec3 want{double(p0.x + t * (LD(p1.x) - p0.x)), double(p0.y + t * (LD(p1.y) - p0.y)),
                                   double(p0.z + t * (LD(p1.z) - p0.z))};
             const glm::dvec3 got = edge_crossing(p0, p1, f0, f1, iso);
             CHECK_MESSAGE(glm::length(got - want) <= 1e-12 * 6, "p0 " << str(p0) << " f0 " << f0 << ", p1 " << str(p1) << " f1 "
                                                                       << f1 << ", iso " << iso << ": expected " << str(want)
-                                                                      << ", got " << str(got));
+                                                                      << " (t = " << double(t) << "), got " << str(got));
         }
         CHECK(edge_crossing({0, 0, 0}, {1, 0, 0}, -1.0, 3.0, 0.0) == glm::dvec3(0.25, 0, 0));
-        CHECK_MESSAGE(edge_crossing({0, 0, 0}, {2, 0, 0}, 1.0, -1.0, 1.0) == glm::dvec3(0, 0, 0), "a tie end is the crossing");
+        const double d = crossing_margin;
+        CHECK_MESSAGE(edge_crossing({0, 0, 0}, {2, 0, 0}, 1.0, -1.0, 1.0) == glm::dvec3(2 * d, 0, 0),
+                      "f0 == iso (a tie, outside) and f1 inside: t = 0 clamps to δ, the point (2δ, 0, 0); got "
+                          << str(edge_crossing({0, 0, 0}, {2, 0, 0}, 1.0, -1.0, 1.0)));
+        CHECK_MESSAGE(edge_crossing({0, 0, 0}, {0, 0, 4}, -3.0, 0.5, 0.5) == glm::dvec3(0, 0, 4 * (1 - d)),
+                      "f1 == iso: t = 1 clamps to 1 − δ, the point (0, 0, 4(1 − δ)); got "
+                          << str(edge_crossing({0, 0, 0}, {0, 0, 4}, -3.0, 0.5, 0.5)));
+        CHECK_MESSAGE(edge_crossing({1, 0, 0}, {1, 1, 0}, -1e-300, 1.0, 0.0) == glm::dvec3(1, d, 0),
+                      "f0 = −1e-300 (t = 1e-300): clamped to δ; got " << str(edge_crossing({1, 0, 0}, {1, 1, 0}, -1e-300, 1.0, 0.0)));
         CHECK_THROWS_AS(edge_crossing({0, 0, 0}, {1, 0, 0}, 1.0, 2.0, 0.0), std::invalid_argument);
         CHECK_THROWS_AS(edge_crossing({0, 0, 0}, {1, 0, 0}, 0.0, 2.0, 0.0), std::invalid_argument);
+        CHECK_THROWS_AS(edge_crossing({0, 0, 0}, {1, 0, 0}, -1.0, -2.0, 0.0), std::invalid_argument);
     }
 
     TEST_CASE("marching cubes: every one of the 256 cases on one cube: the table's triangles on the right edges; "
-              "normals from the gradients" * geolab::points(4) *
+              "normals from the gradients" * geolab::points(3) *
               geolab::hint("Edge e of the table joins corners mc_edge_corners[e][0] and [1]; interpolate from the lower "
                            "sample. The normal is the gradient interpolated with the same t, normalized — not the "
                            "triangle's normal.")) {
@@ -131,7 +170,7 @@ TEST_SUITE("Task 4: marching cubes") {
     }
 
     TEST_CASE("marching cubes: a sphere is closed; χ = 2; vertices on the sphere; normals along the gradient" *
-              geolab::points(4)) {
+              geolab::points(3)) {
         for (int cells : {10, 23, 40}) {
             const double r = 0.61;
             const glm::dvec3 c{0.013, -0.021, 0.034};
@@ -152,7 +191,7 @@ TEST_SUITE("Task 4: marching cubes") {
     }
 
     TEST_CASE("marching cubes: each crossed lattice edge gives exactly one vertex; shared by its cubes" *
-              geolab::points(3) * geolab::hint("Key the vertices by lattice edge (lower sample, axis), not by cube.")) {
+              geolab::points(2) * geolab::hint("Key the vertices by lattice edge (lower sample, axis), not by cube.")) {
         Rng rng(74);
         for (int n = 0; n < 4; ++n) {
             const glm::dvec3 c = rng.point(-0.1, 0.1);
@@ -188,7 +227,7 @@ TEST_SUITE("Task 4: marching cubes") {
     }
 
     TEST_CASE("marching cubes: random fields full of ambiguous faces give closed; consistently oriented surfaces" *
-              geolab::points(4) * geolab::hint("Use geolab::mc_tables as it is: its ambiguous faces are resolved the "
+              geolab::points(3) * geolab::hint("Use geolab::mc_tables as it is: its ambiguous faces are resolved the "
                                                 "same way by both cubes that share them.")) {
         Rng rng(75);
         for (int n = 0; n < 12; ++n) {
@@ -212,7 +251,7 @@ TEST_SUITE("Task 4: marching cubes") {
     }
 
     TEST_CASE("marching cubes: torus R = 0.5; r = 0.1: χ = 0; volume 2π²Rr² = 0.098696; error falling with the cell" *
-              geolab::points(4)) {
+              geolab::points(3)) {
         const double want = 2 * std::numbers::pi * std::numbers::pi * 0.5 * 0.01;
         CHECK(std::abs(want - 0.098696) < 5e-7);
         double last = 1e9;
@@ -230,7 +269,7 @@ TEST_SUITE("Task 4: marching cubes") {
 
     TEST_CASE("marching cubes: samples exactly at the iso-value (ties) count as outside: closed; no hole" *
               geolab::points(2) * geolab::hint("f == iso is outside in cube_index AND in deciding which edges are "
-                                                "crossed; the crossing on an edge with a tie end is that end.")) {
+                                                "crossed.")) {
         // |p|² − 25 on the integer lattice: zero at (5,0,0), (3,4,0), ... exactly.
         const McMesh s = marching_cubes(lattice_of([](const glm::dvec3& p) { return glm::dot(p, p) - 25; },
                                                    [](const glm::dvec3& p) { return 2.0 * p; }, glm::dvec3(-7), 1.0,
@@ -238,21 +277,91 @@ TEST_SUITE("Task 4: marching cubes") {
                                         0.0);
         CHECK_MESSAGE(pairing_defect(s.soup) == "", "|p|² = 25 with ties: " << pairing_defect(s.soup));
         CHECK_MESSAGE(euler(s.soup) == 2, "|p|² = 25 with ties: χ = " << euler(s.soup));
-        bool tie_vertex = false;
-        for (const glm::dvec3& p : s.soup.positions) tie_vertex |= p == glm::dvec3(3, 4, 0);
-        CHECK_MESSAGE(tie_vertex, "the tie sample (3, 4, 0) has inside neighbours: a vertex must sit exactly on it");
         // max(|x|, |y|, |z|) − 3: whole faces of ties.
-        auto box_f = [](const glm::dvec3& p) { return std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}) - 3; };
-        auto box_g = [](const glm::dvec3& p) {
-            glm::dvec3 g(0.0);
-            const glm::dvec3 a = glm::abs(p);
-            const int i = a.x >= a.y && a.x >= a.z ? 0 : a.y >= a.z ? 1 : 2;
-            g[i] = p[i] >= 0 ? 1 : -1;
-            return g;
-        };
         const McMesh b = marching_cubes(lattice_of(box_f, box_g, glm::dvec3(-5), 1.0, glm::ivec3(11)), 0.0);
-        const geolab::SurfaceCheck sc = geolab::check_surface(b.soup);
-        CHECK_MESSAGE(sc.closed_manifold(), "max-norm cube with faces of ties: " << sc.summary());
-        CHECK_MESSAGE(sc.euler_characteristic == 2, "χ = " << sc.euler_characteristic);
+        CHECK_MESSAGE(pairing_defect(b.soup) == "", "max-norm cube with faces of ties: " << pairing_defect(b.soup));
+        CHECK_MESSAGE(euler(b.soup) == 2, "max-norm cube with faces of ties: χ = " << euler(b.soup));
+        CHECK_MESSAGE(b.soup.n_vertices() == crossed_edges(lattice_of(box_f, box_g, glm::dvec3(-5), 1.0, glm::ivec3(11)), 0.0),
+                      "one vertex per crossed edge (ties are outside)");
+    }
+
+    TEST_CASE("marching cubes: the tie rule — no zero-area triangle; no two vertices at one point (exact checks)" *
+              geolab::points(3) *
+              geolab::hint("Clamp t to [δ, 1 − δ] (δ = crossing_margin) in edge_crossing, and use the same t for the "
+                           "normal: every vertex then lies strictly inside its edge (blobby.hpp, the tie rule).")) {
+        // |p|² − 25 on the integer lattice: the tie (3, 4, 0) has the inside neighbours (2, 4, 0) and (3, 3, 0),
+        // so two edges end on it; vertices put on the sample itself would coincide.
+        const Lattice sphere = lattice_of([](const glm::dvec3& p) { return glm::dot(p, p) - 25; },
+                                          [](const glm::dvec3& p) { return 2.0 * p; }, glm::dvec3(-7), 1.0, glm::ivec3(15));
+        const McMesh s = marching_cubes(sphere, 0.0);
+        check_tie_output(s, sphere, 0.0, "|p|² − 25 on the integer lattice (ties on the sphere)", 1, 2);
+        int near_tie = 0;
+        for (const glm::dvec3& p : s.soup.positions) {
+            const double d = glm::length(p - glm::dvec3(3, 4, 0));
+            CHECK_MESSAGE(d > 0, "a vertex sits exactly on the tie sample (3, 4, 0)");
+            near_tie += d <= 1.5 * crossing_margin;
+        }
+        CHECK_MESSAGE(near_tie == 2, "the two crossed edges ending on the tie (3, 4, 0) put their vertices δ from it: "
+                                     "expected 2 vertices within 1.5δ of it, got " << near_tie);
+        // Two boxes with the tie plane x = 0 between them: max(max-norm − 3, −|x|).
+        auto twin_f = [](const glm::dvec3& p) { return std::max(box_f(p), -std::abs(p.x)); };
+        const Lattice twin = lattice_of(twin_f, box_g, glm::dvec3(-5), 1.0, glm::ivec3(11));
+        check_tie_output(marching_cubes(twin, 0.0), twin, 0.0, "two boxes split by the tie plane x = 0", 2, 4);
+        // A lone inside sample among ties, and a lone tie inside the solid (a cavity of size 2δ).
+        for (const double inner : {-1.0, 1.0}) {
+            Lattice L;
+            L.n = glm::ivec3(5);
+            for (int k = 0; k < 5; ++k)
+                for (int j = 0; j < 5; ++j)
+                    for (int i = 0; i < 5; ++i) {
+                        const bool border = i == 0 || j == 0 || k == 0 || i == 4 || j == 4 || k == 4;
+                        const bool centre = i == 2 && j == 2 && k == 2;
+                        L.values.push_back(inner < 0 ? (centre ? -1.0 : 0.0) : (border ? 1.0 : centre ? 0.0 : -1.0));
+                        L.gradients.push_back(glm::dvec3(i - 2, j - 2, k - 2));
+                    }
+            const McMesh m = marching_cubes(L, 0.0);
+            check_tie_output(m, L, 0.0, inner < 0 ? std::string("a lone inside sample among ties") : "a lone tie inside the solid",
+                             inner < 0 ? 1 : 2, inner < 0 ? 2 : 4);
+            // The piece around the centre (2, 2, 2): an octahedron of half-diagonal 1 − δ around the inside sample,
+            // or a cavity of half-diagonal δ around the tie (facing inwards: negative volume).
+            const double d = crossing_margin;
+            const double want = inner < 0 ? 4.0 / 3.0 * std::pow(1 - d, 3) : -4.0 / 3.0 * d * d * d;
+            const LD got = centre_volume(m.soup, glm::dvec3(2.0), inner < 0 ? 1.5 : 0.5);
+            const std::string name = inner < 0 ? "lone inside sample" : "lone tie";
+            CHECK_MESSAGE(std::abs(double(got) - want) < 1e-6 * std::abs(want),
+                          name << ": the piece around the centre encloses " << double(got) << ", expected " << want);
+        }
+        // Random lattices where a third of the samples are exact ties.
+        Rng rng(77);
+        for (int n = 0; n < 8; ++n) {
+            Lattice L;
+            L.n = glm::ivec3(6 + n % 3, 5 + n % 2, 7);
+            for (int k = 0; k < L.n.z; ++k)
+                for (int j = 0; j < L.n.y; ++j)
+                    for (int i = 0; i < L.n.x; ++i) {
+                        const bool border = i == 0 || j == 0 || k == 0 || i == L.n.x - 1 || j == L.n.y - 1 || k == L.n.z - 1;
+                        const int c = rng.integer(-1, 1);
+                        L.values.push_back(border ? std::max(c, 0) : c * rng.uniform(0.5, 2.0));
+                        L.gradients.push_back(rng.point(-1, 1));
+                    }
+            check_tie_output(marching_cubes(L, 0.0), L, 0.0, "random lattice " + std::to_string(n) + " with ties", 0, 0);
+        }
+        // The margin δ·h must survive rounding: a lattice more than 2^30 cells from 0 is refused.
+        Lattice far = sphere;
+        far.origin.x = -std::ldexp(1.0, 30);
+        check_tie_output(marching_cubes(far, 0.0), far, 0.0, "|p|² − 25 moved to x = −2^30 (h = 1)", 1, 2);
+        far.origin.x = -1.5 * std::ldexp(1.0, 30);
+        CHECK_THROWS_AS(marching_cubes(far, 0.0), std::invalid_argument);
+        far.origin.x = std::ldexp(1.0, 30) - 14;  // its last sample, origin + 14h, is 2^30 h: allowed
+        CHECK_NOTHROW(marching_cubes(far, 0.0));
+        far.origin.x = std::ldexp(1.0, 30) - 13;
+        CHECK_THROWS_AS(marching_cubes(far, 0.0), std::invalid_argument);
+        for (int a = 0; a < 3; ++a) {  // every axis is checked
+            Lattice axis = sphere;
+            axis.origin[a] = -1.5 * std::ldexp(1.0, 30);
+            CHECK_THROWS_AS(marching_cubes(axis, 0.0), std::invalid_argument);
+            axis.origin[a] = std::ldexp(1.0, 30) - 13;
+            CHECK_THROWS_AS(marching_cubes(axis, 0.0), std::invalid_argument);
+        }
     }
 }

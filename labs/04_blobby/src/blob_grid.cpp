@@ -1,11 +1,13 @@
 // Task 3: fast evaluation through a uniform grid of the blobs (handout §4).
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <glm/vector_relational.hpp>
 
 #include "geolab/blobby.hpp"
 

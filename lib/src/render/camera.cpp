@@ -78,4 +78,26 @@ Ray Camera::ray(double x, double y, int width, int height) const {
     return Ray{eye(), glm::normalize(b - a)};
 }
 
+glm::dvec3 Camera::pixel(const glm::dvec3& p, int width, int height) const {
+    const float aspect = float(width) / float(height);
+    const glm::dvec4 c = glm::dmat4(proj(aspect)) * glm::dmat4(view()) * glm::dvec4(p, 1.0);
+    const glm::dvec3 eye_space = glm::dvec3(glm::dmat4(view()) * glm::dvec4(p, 1.0));
+    const double w = c.w != 0.0 ? c.w : 1e-300;
+    return {(c.x / w + 1.0) * 0.5 * width, (1.0 - c.y / w) * 0.5 * height, -eye_space.z};
+}
+
+void Camera::orbit(double dx, double dy) {
+    yaw_deg -= 0.4f * float(dx);
+    pitch_deg = std::clamp(pitch_deg + 0.4f * float(dy), -89.0f, 89.0f);
+}
+
+void Camera::pan(double dx, double dy, int width, int height) {
+    // one pixel is this many world units at the target's depth
+    const float unit =
+        2.0f * distance * std::tan(0.5f * glm::radians(fov_deg)) / float(std::max(1, std::min(width, height)));
+    const glm::mat4 v = view();
+    const glm::vec3 right(v[0][0], v[1][0], v[2][0]), u(v[0][1], v[1][1], v[2][1]);
+    target += unit * (-float(dx) * right + float(dy) * u);
+}
+
 }  // namespace geolab::render

@@ -118,6 +118,24 @@ void main() {
     frag = vec4(r > rim_start ? 0.45 * f_color : f_color, 1.0);
 })";
 
+// Overlay: flat rectangles given in output pixels (top-left origin), with an RGBA colour; blended, no depth.
+const char* kOverlayVs = R"(#version 330 core
+layout(location = 0) in vec2 a_pixel;
+layout(location = 1) in vec4 a_color;
+uniform vec2 u_viewport;
+uniform float u_scale;
+out vec4 f_color;
+void main() {
+    vec2 p = a_pixel * u_scale / u_viewport;
+    gl_Position = vec4(2.0 * p.x - 1.0, 1.0 - 2.0 * p.y, 0.0, 1.0);
+    f_color = a_color;
+})";
+
+const char* kOverlayFs = R"(#version 330 core
+in vec4 f_color;
+out vec4 frag;
+void main() { frag = f_color; })";
+
 GLuint compile(const Gl& gl, GLenum type, const char* source) {
     GLuint s = gl.CreateShader(type);
     gl.ShaderSource(s, 1, &source, nullptr);
@@ -163,17 +181,20 @@ Renderer::Renderer(const Gl& gl) : gl_(gl) {
     prog_.mesh = link(gl, kMeshVs, nullptr, kMeshFs);
     prog_.lines = link(gl, kLineVs, kLineGs, kLineFs);
     prog_.points = link(gl, kPointVs, nullptr, kPointFs);
+    prog_.overlay = link(gl, kOverlayVs, nullptr, kOverlayFs);
 }
 
 Renderer::~Renderer() {
     free_batches();
+    set_overlay({});
     gl_.DeleteProgram(prog_.mesh);
     gl_.DeleteProgram(prog_.lines);
     gl_.DeleteProgram(prog_.points);
+    gl_.DeleteProgram(prog_.overlay);
 }
 
 void Renderer::free_batches() {
-    for (auto* list : {&opaque_, &overlay_, &transparent_}) {
+    for (auto* list : {&opaque_, &overlay_, &transparent_, &flat_}) {
         for (Batch& b : *list) {
             gl_.DeleteBuffers(1, &b.vbo);
             gl_.DeleteVertexArrays(1, &b.vao);
@@ -183,19 +204,28 @@ void Renderer::free_batches() {
 }
 
 Renderer::Batch Renderer::make_batch(Kind kind, const std::vector<float>& data, int floats_per_vertex) {
+    std::vector<int> sizes(floats_per_vertex / 3, 3);  // vec3 attributes: position, [normal,] colour
+    return make_batch(kind, data, sizes);
+}
+
+Renderer::Batch Renderer::make_batch(Kind kind, const std::vector<float>& data, const std::vector<int>& sizes) {
     Batch b{kind};
+    int floats_per_vertex = 0;
+    for (int n : sizes) floats_per_vertex += n;
     b.count = static_cast<GLsizei>(data.size() / floats_per_vertex);
     gl_.GenVertexArrays(1, &b.vao);
     gl_.BindVertexArray(b.vao);
     gl_.GenBuffers(1, &b.vbo);
     gl_.BindBuffer(GL_ARRAY_BUFFER, b.vbo);
     gl_.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.size() * sizeof(float)), data.data(), GL_STATIC_DRAW);
-    // attributes: vec3 each (position, [normal,] color), interleaved
+    // the attributes, interleaved
     const GLsizei stride = floats_per_vertex * sizeof(float);
-    for (int a = 0; a < floats_per_vertex / 3; ++a) {
+    std::size_t offset = 0;
+    for (GLuint a = 0; a < sizes.size(); ++a) {
         gl_.EnableVertexAttribArray(a);
-        gl_.VertexAttribPointer(a, 3, GL_FLOAT, GL_FALSE, stride,
-                                reinterpret_cast<const void*>(static_cast<std::size_t>(3 * a) * sizeof(float)));
+        gl_.VertexAttribPointer(a, sizes[a], GL_FLOAT, GL_FALSE, stride,
+                                reinterpret_cast<const void*>(offset * sizeof(float)));
+        offset += static_cast<std::size_t>(sizes[a]);
     }
     gl_.BindVertexArray(0);
     return b;
@@ -244,12 +274,41 @@ void Renderer::upload(const Scene& scene) {
         b.size = p.size;
         overlay_.push_back(b);
     }
+    if (!scene.overlay().empty()) flat_.push_back(rect_batch(scene.overlay()));
+}
+
+Renderer::Batch Renderer::rect_batch(const std::vector<Scene::Rect>& rects) {
+    // two triangles a rectangle: (x, y) and (r, g, b, a) per vertex
+    std::vector<float> data;
+    data.reserve(rects.size() * 36);
+    for (const Scene::Rect& r : rects) {
+        const glm::vec2 c[6] = {r.lo, {r.hi.x, r.lo.y}, r.hi, r.lo, r.hi, {r.lo.x, r.hi.y}};
+        for (const glm::vec2& p : c) data.insert(data.end(), {p.x, p.y, r.color.r, r.color.g, r.color.b, r.color.a});
+    }
+    return make_batch(Kind::Overlay, data, {2, 4});
+}
+
+void Renderer::set_overlay(const std::vector<Scene::Rect>& rects) {
+    for (Batch& b : widgets_) {
+        gl_.DeleteBuffers(1, &b.vbo);
+        gl_.DeleteVertexArrays(1, &b.vao);
+    }
+    widgets_.clear();
+    if (!rects.empty()) widgets_.push_back(rect_batch(rects));
 }
 
 GLint Renderer::uniform(GLuint program, const char* name) const { return gl_.GetUniformLocation(program, name); }
 
 void Renderer::draw_batch(const Batch& b, const glm::mat4& view, const glm::mat4& proj, glm::vec2 viewport,
                           float pixel_scale) {
+    if (b.kind == Kind::Overlay) {
+        gl_.UseProgram(prog_.overlay);
+        gl_.Uniform2f(uniform(prog_.overlay, "u_viewport"), viewport.x, viewport.y);
+        gl_.Uniform1f(uniform(prog_.overlay, "u_scale"), pixel_scale);
+        gl_.BindVertexArray(b.vao);
+        gl_.DrawArrays(GL_TRIANGLES, 0, b.count);
+        return;
+    }
     GLuint p = b.kind == Kind::Mesh ? prog_.mesh : b.kind == Kind::Lines ? prog_.lines : prog_.points;
     gl_.UseProgram(p);
     gl_.UniformMatrix4fv(uniform(p, "u_view"), 1, GL_FALSE, glm::value_ptr(view));
@@ -266,6 +325,8 @@ void Renderer::draw_batch(const Batch& b, const glm::mat4& view, const glm::mat4
             gl_.Uniform1f(uniform(p, "u_width"), b.size * pixel_scale);
             gl_.DrawArrays(GL_LINES, 0, b.count);
             break;
+        case Kind::Overlay:
+            break;  // drawn above
         case Kind::Points:
             gl_.Uniform1f(uniform(p, "u_pull"), kPull);
             gl_.Uniform1f(uniform(p, "u_size"), b.size * pixel_scale);
@@ -315,6 +376,17 @@ void Renderer::draw(const Camera& camera, int width, int height, float pixel_sca
             if (b.kind != Kind::Mesh) draw_batch(b, view, proj, viewport, pixel_scale);
         }
         gl_.Disable(GL_BLEND);
+    }
+
+    // the overlay: over everything, blended, in the order given
+    if (!flat_.empty() || !widgets_.empty()) {
+        gl_.Disable(GL_DEPTH_TEST);
+        gl_.Enable(GL_BLEND);
+        gl_.BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        for (const Batch& b : flat_) draw_batch(b, view, proj, viewport, pixel_scale);
+        for (const Batch& b : widgets_) draw_batch(b, view, proj, viewport, pixel_scale);
+        gl_.Disable(GL_BLEND);
+        gl_.Enable(GL_DEPTH_TEST);
     }
     gl_.BindVertexArray(0);
     gl_.UseProgram(0);

@@ -21,6 +21,8 @@ public:
 
     // Replaces the GPU copy of the scene.
     void upload(const Scene& scene);
+    // Replaces the rectangles drawn over the scene's own overlay (the window's widgets).
+    void set_overlay(const std::vector<Scene::Rect>& rects);
     // Clears to the scene background and draws it into a width × height framebuffer. `pixel_scale` converts the
     // scene's pixel sizes (line widths, point sizes) to framebuffer pixels (2 when supersampling).
     void draw(const Camera& camera, int width, int height, float pixel_scale);
@@ -28,7 +30,7 @@ public:
     Image read_pixels(int width, int height) const;
 
 private:
-    enum class Kind { Mesh, Lines, Points };
+    enum class Kind { Mesh, Lines, Points, Overlay };
     struct Batch {
         Kind kind;
         GLuint vao = 0, vbo = 0;
@@ -36,9 +38,12 @@ private:
         float opacity = 1.0f, size = 1.0f;
     };
     struct Programs {
-        GLuint mesh = 0, lines = 0, points = 0;
+        GLuint mesh = 0, lines = 0, points = 0, overlay = 0;
     };
 
+    // A vertex array of interleaved float attributes; `sizes`: the floats of each attribute (location 0, 1, ...).
+    Batch make_batch(Kind kind, const std::vector<float>& interleaved, const std::vector<int>& sizes);
+    // The same with vec3 attributes only (floats_per_vertex / 3 of them).
     Batch make_batch(Kind kind, const std::vector<float>& interleaved, int floats_per_vertex);
     void free_batches();
     void draw_batch(const Batch& b, const glm::mat4& view, const glm::mat4& proj, glm::vec2 viewport,
@@ -47,7 +52,9 @@ private:
 
     const Gl& gl_;
     Programs prog_;
-    std::vector<Batch> opaque_, overlay_, transparent_;  // drawn in this order
+    // drawn in this order (flat_: the scene's overlay rectangles, widgets_: set_overlay's)
+    std::vector<Batch> opaque_, overlay_, transparent_, flat_, widgets_;
+    Batch rect_batch(const std::vector<Scene::Rect>& rects);
     glm::vec3 background_{1.0f};
 };
 

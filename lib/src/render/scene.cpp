@@ -134,6 +134,10 @@ void Scene::add_points(const std::vector<glm::vec3>& points, const std::vector<g
     points_.push_back(Points{points, colors, size});
 }
 
+void Scene::add_rect(glm::vec2 lo, glm::vec2 hi, glm::vec4 color) {
+    if (lo.x < hi.x && lo.y < hi.y) overlay_.push_back(Rect{lo, hi, color});
+}
+
 Box Scene::bounds() const {
     constexpr double inf = std::numeric_limits<double>::infinity();
     Box box{glm::dvec3(inf), glm::dvec3(-inf)};
@@ -154,6 +158,7 @@ void Scene::clear() {
     meshes_.clear();
     lines_.clear();
     points_.clear();
+    overlay_.clear();
 }
 
 }  // namespace geolab::render

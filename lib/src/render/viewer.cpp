@@ -93,12 +93,16 @@ struct Viewer::Impl {
     bool scene_dirty = true, has_scene = false;
     std::function<void(int)> key_cb;
     std::function<void(const Ray&)> pick_cb;
-    std::function<void(double)> frame_cb;
+    std::function<bool(const MouseEvent&)> mouse_cb;
+    std::function<bool(double)> frame_cb;
+    std::function<void()> before_draw_cb;
+    std::vector<Scene::Rect> overlay;
+    bool overlay_dirty = false;
     double start_time = 0.0;
     int screenshot_count = 0;
     // mouse state
-    int button = -1;  // GLFW_MOUSE_BUTTON_LEFT / RIGHT while pressed
-    bool pan = false, dragged = false;
+    int button = -1;                                      // GLFW_MOUSE_BUTTON_LEFT / RIGHT while pressed
+    bool pan = false, dragged = false, captured = false;  // captured: the press went to mouse_cb
     double press_x = 0, press_y = 0, last_x = 0, last_y = 0;
     // an exception thrown by a user callback: it must not unwind through GLFW's C frames, so it is kept here
     // and rethrown once GLFW returns
@@ -116,6 +120,10 @@ struct Viewer::Impl {
         if (scene_dirty) {
             renderer->upload(scene);
             scene_dirty = false;
+        }
+        if (overlay_dirty) {
+            renderer->set_overlay(overlay);
+            overlay_dirty = false;
         }
         int fw = 0, fh = 0, ww = 0, wh = 0;
         glfwGetFramebufferSize(window, &fw, &fh);
@@ -181,6 +189,16 @@ struct Viewer::Impl {
         }
     }
 
+    // Sends a mouse event to mouse_cb; its answer (false when there is none or it threw).
+    bool send_mouse(MouseEvent::Phase phase, double x, double y) {
+        if (!mouse_cb) return false;
+        MouseEvent e{phase, x, y, 0, 0, pan};
+        glfwGetWindowSize(window, &e.width, &e.height);
+        bool taken = false;
+        guarded([&] { taken = mouse_cb(e); });
+        return taken;
+    }
+
     static void mouse_button(GLFWwindow* w, int button, int action, int mods) {
         Impl& v = of(w);
         double x, y;
@@ -191,8 +209,14 @@ struct Viewer::Impl {
             v.dragged = false;
             v.press_x = v.last_x = x;
             v.press_y = v.last_y = y;
+            v.captured = v.send_mouse(MouseEvent::Phase::press, x, y);
         } else if (action == GLFW_RELEASE && button == v.button) {
             v.button = -1;
+            if (v.captured) {
+                v.captured = false;
+                v.send_mouse(MouseEvent::Phase::release, x, y);
+                return;
+            }
             if (!v.dragged && button == GLFW_MOUSE_BUTTON_LEFT && v.pick_cb) {
                 int ww, wh;
                 glfwGetWindowSize(w, &ww, &wh);
@@ -204,23 +228,21 @@ struct Viewer::Impl {
     static void cursor(GLFWwindow* w, double x, double y) {
         Impl& v = of(w);
         if (v.button < 0) return;
+        if (v.captured) {
+            v.send_mouse(MouseEvent::Phase::move, x, y);
+            return;
+        }
         if (std::hypot(x - v.press_x, y - v.press_y) > 3.0) v.dragged = true;
         const double dx = x - v.last_x, dy = y - v.last_y;
         v.last_x = x;
         v.last_y = y;
         if (!v.dragged) return;
-        Camera& c = v.camera;
         if (v.pan) {
-            // move the target with the cursor: one pixel is this many world units at the target's depth
             int ww, wh;
             glfwGetWindowSize(w, &ww, &wh);
-            const float unit = 2.0f * c.distance * std::tan(0.5f * glm::radians(c.fov_deg)) / float(std::min(ww, wh));
-            const glm::mat4 view = c.view();
-            const glm::vec3 right(view[0][0], view[1][0], view[2][0]), up(view[0][1], view[1][1], view[2][1]);
-            c.target += unit * (-float(dx) * right + float(dy) * up);
+            v.camera.pan(dx, dy, ww, wh);
         } else {
-            c.yaw_deg -= 0.4f * float(dx);
-            c.pitch_deg = std::clamp(c.pitch_deg + 0.4f * float(dy), -89.0f, 89.0f);
+            v.camera.orbit(dx, dy);
         }
     }
 
@@ -312,7 +334,14 @@ void Viewer::set_status(std::string status) {
 
 void Viewer::on_key(std::function<void(int)> callback) { impl_->key_cb = std::move(callback); }
 void Viewer::on_pick(std::function<void(const Ray&)> callback) { impl_->pick_cb = std::move(callback); }
-void Viewer::on_frame(std::function<void(double)> callback) { impl_->frame_cb = std::move(callback); }
+void Viewer::on_mouse(std::function<bool(const MouseEvent&)> callback) { impl_->mouse_cb = std::move(callback); }
+void Viewer::on_frame(std::function<bool(double)> callback) { impl_->frame_cb = std::move(callback); }
+void Viewer::on_before_draw(std::function<void()> callback) { impl_->before_draw_cb = std::move(callback); }
+
+void Viewer::set_overlay(std::vector<Scene::Rect> overlay) {
+    impl_->overlay = std::move(overlay);
+    impl_->overlay_dirty = true;
+}
 
 bool Viewer::run_frames(int frames) {
     Impl& v = *impl_;
@@ -320,7 +349,9 @@ bool Viewer::run_frames(int frames) {
         if (glfwWindowShouldClose(v.window)) break;
         glfwPollEvents();
         v.rethrow();
-        if (v.frame_cb) v.frame_cb(glfwGetTime() - v.start_time);
+        if (v.frame_cb) v.guarded([&] { v.frame_cb(glfwGetTime() - v.start_time); });
+        if (v.before_draw_cb) v.guarded([&] { v.before_draw_cb(); });
+        v.rethrow();
         v.draw();
         glfwSwapBuffers(v.window);
     }
@@ -330,16 +361,19 @@ bool Viewer::run_frames(int frames) {
 void Viewer::run() {
     Impl& v = *impl_;
     v.start_time = glfwGetTime();
+    bool animating = bool(v.frame_cb);
     while (!glfwWindowShouldClose(v.window)) {
-        // animate: redraw continuously; otherwise sleep until input arrives (every event redraws)
-        if (v.frame_cb) {
+        // animating: redraw continuously; otherwise sleep until input arrives (every event redraws)
+        if (animating)
             glfwPollEvents();
-            v.rethrow();
-            v.frame_cb(glfwGetTime() - v.start_time);
-        } else {
+        else
             glfwWaitEvents();
-            v.rethrow();
-        }
+        v.rethrow();
+        animating = false;
+        if (v.frame_cb) v.guarded([&] { animating = v.frame_cb(glfwGetTime() - v.start_time); });
+        if (v.before_draw_cb) v.guarded([&] { v.before_draw_cb(); });
+        v.rethrow();
+        if (glfwWindowShouldClose(v.window)) break;
         v.draw();
         glfwSwapBuffers(v.window);
     }
@@ -366,7 +400,8 @@ void check_figure_dir(const std::filesystem::path& dir) {
     const fs::path target = fs::weakly_canonical(fs::absolute(dir), ec);
     const auto rel = target.lexically_relative(docs);
     if (!ec && !rel.empty() && *rel.begin() != "..")
-        throw std::runtime_error(dir.string() + " is inside docs/, which holds the handouts' figures (the "
+        throw std::runtime_error(dir.string() +
+                                 " is inside docs/, which holds the handouts' figures (the "
                                  "reference's): write yours elsewhere, e.g. --figures out/figures/NN_name");
 }
 

@@ -66,7 +66,8 @@ double density(Kernel kernel, const Blob& blob, double r);
 //! dD/dr at distance r ≥ 0 (0 at r = 0 and beyond the support). Same errors as density.
 double density_derivative(Kernel kernel, const Blob& blob, double r);
 
-//! The distance beyond which D is exactly 0: R for nishimura and wyvill, +infinity for blinn.
+//! The support radius: R for nishimura and wyvill, +infinity for blinn. D(r) and D'(r) are exactly 0 for every
+//! r ≥ R (at r = R too: mind that Wyvill's polynomial evaluated at s = 1 may round to a tiny non-zero value).
 //! \throw std::invalid_argument for an invalid blob (as density).
 double support_radius(Kernel kernel, const Blob& blob);
 
@@ -144,6 +145,21 @@ Lattice sample_lattice(const BlobScene& scene, const glm::dvec3& origin, double 
                        std::uint64_t& kernel_evaluations);
 
 // ==== Task 4: marching cubes (handout §5) =====================================================================
+//
+// THE TIE RULE (handout §5, "Ties"). Samples exactly at the iso-value must not break the surface or collapse
+// triangles. One rule, in two halves:
+//   - topology: a sample is INSIDE when f < iso and OUTSIDE otherwise, so f == iso counts as outside (the surface
+//     of f = iso + ε for a tiny ε > 0): every lattice edge is crossed or not, never "on" the surface, and the
+//     consistent table closes the surface whatever the ties;
+//   - geometry: the crossing parameter t is clamped to [δ, 1 − δ] with δ = crossing_margin, so every vertex lies
+//     STRICTLY inside its lattice edge. Two vertices never coincide (distinct edges have disjoint interiors), and
+//     a triangle's three corners lie strictly inside three distinct edges of one cube, which no line meets in
+//     three points: no triangle has zero area. Exactly so in floating point too, because a vertex differs from
+//     its edge's lower sample in the edge's coordinate only, by at least δ·h, which is more than a rounding step
+//     while the lattice's coordinates stay within 2³⁰·h of 0 (marching_cubes checks that).
+
+//! δ of the tie rule: crossing parameters are clamped to [δ, 1 − δ].
+inline constexpr double crossing_margin = 1e-6;
 
 //! The case index of a cube from its eight corner values (corner c as in mc_tables.hpp: bit 0 x, bit 1 y,
 //! bit 2 z): bit c is set when corner c is INSIDE, f[c] < iso. The tie rule: f[c] == iso counts as OUTSIDE.
@@ -151,8 +167,9 @@ int cube_index(const std::array<double, 8>& f, double iso);
 
 //! Where the iso-surface crosses the segment p0–p1 whose ends have values f0 and f1 on opposite sides (one
 //! inside, one outside by the tie rule): p0 + t (p1 − p0) with t = (iso − f0)/(f1 − f0), the linear
-//! interpolation. A tie end (f == iso) gives that end itself. \throw std::invalid_argument when both ends are
-//! on the same side.
+//! interpolation, clamped to [δ, 1 − δ] (δ = crossing_margin; the tie rule): a tie end (f == iso) gives the
+//! point δ along the edge from it, never the end itself. \throw std::invalid_argument when both ends are on
+//! the same side.
 glm::dvec3 edge_crossing(const glm::dvec3& p0, const glm::dvec3& p1, double f0, double f1, double iso);
 
 //! A triangle mesh with one unit normal per vertex.
@@ -165,12 +182,14 @@ struct McMesh {
 //! Marching cubes over the lattice's (n.x−1)(n.y−1)(n.z−1) cubes with the table geolab::mc_tables:
 //!   - one vertex per lattice edge that the surface crosses (shared by every cube around that edge), placed by
 //!     edge_crossing from the edge's lower sample to its upper one;
-//!   - its normal: the gradient interpolated with the same t between the edge's two samples, normalized
-//!     (lattice.gradients is required); a zero interpolated gradient gives (0, 0, 0);
+//!   - its normal: the gradient interpolated with the same (clamped) t between the edge's two samples,
+//!     normalized (lattice.gradients is required); a zero interpolated gradient gives (0, 0, 0);
 //!   - triangles of the table, counter-clockwise seen from outside (their normal points to where f > iso).
-//! The surface is closed and 2-manifold when every boundary sample of the lattice is outside; ties (f == iso)
-//! count as outside. \throw std::invalid_argument when n < 2 on some axis, values.size() ≠ n.x·n.y·n.z,
-//! gradients.size() differs from values.size(), h ≤ 0 or a value is not finite.
+//! With the tie rule the output has no zero-area triangle and no two vertices at one point, on any lattice;
+//! it is closed and 2-manifold when every boundary sample of the lattice is outside (ties included).
+//! \throw std::invalid_argument when n < 2 on some axis, values.size() ≠ n.x·n.y·n.z, gradients.size()
+//!        differs from values.size(), h ≤ 0 or not finite, iso or a value is not finite (naming the sample), or
+//!        a lattice coordinate (origin, or origin + h·(n − 1)) exceeds 2³⁰·h in magnitude.
 McMesh marching_cubes(const Lattice& lattice, double iso);
 
 // ==== Given (given.cpp) ========================================================================================

@@ -39,6 +39,15 @@ struct Camera {
     //! The ray from the eye through the point (x, y) of a width × height image, in pixels, (0, 0) = top-left
     //! corner (window / mouse coordinates; pixel centres are at +0.5).
     Ray ray(double x, double y, int width, int height) const;
+    //! Where the world point p appears in a width × height image: (x, y) in pixels as ray() takes them (the
+    //! inverse of ray) and z, the depth of p along the viewing direction (> 0 in front of the eye; x and y
+    //! are meaningless when z ≤ 0).
+    glm::dvec3 pixel(const glm::dvec3& p, int width, int height) const;
+
+    //! What a mouse drag of (dx, dy) pixels does to the camera: orbit turns the eye about the target (0.4° a
+    //! pixel; the pitch stays within ±89°); pan moves the target with the cursor in a width × height view.
+    void orbit(double dx, double dy);
+    void pan(double dx, double dy, int width, int height);
 };
 
 }  // namespace geolab::render

@@ -1,10 +1,13 @@
 #pragma once
 //! \file render/scene.hpp
-//! What to draw, described on the CPU: meshes, line segments and points with colours. A Scene is plain data
-//! (copyable, no GL); the back ends (render_image, Viewer) upload it. Polygons are triangulated as fans around
+//! What to draw, described on the CPU: meshes, line segments and points with colours, plus a flat overlay of
+//! rectangles in image pixels (widgets, text) drawn over them. A Scene is plain data (copyable, no GL); the back
+//! ends (render_image, Viewer) upload it. Polygons are triangulated as fans around
 //! their first vertex, so non-convex faces may be drawn wrongly; the wireframe shows the polygon edges only.
 #include <cstdint>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 #include <vector>
 
 #include "geolab/field.hpp"
@@ -43,6 +46,13 @@ public:
         float size = 8.0f;
     };
 
+    //! A flat rectangle over the 3D picture, in output pixels with (0, 0) the top-left corner (mouse coordinates):
+    //! x in [lo.x, hi.x], y in [lo.y, hi.y]. Blended with its alpha; later rectangles cover earlier ones.
+    struct Rect {
+        glm::vec2 lo{0.0f}, hi{0.0f};
+        glm::vec4 color{0.0f, 0.0f, 0.0f, 1.0f};
+    };
+
     glm::vec3 background{1.0f, 1.0f, 1.0f};  //!< clear colour (white by default, for print)
 
     //! Adds a mesh in one colour (style.color). \throw std::invalid_argument as check_soup does.
@@ -68,16 +78,21 @@ public:
     //! Adds points with one colour each. \pre colors.size() == points.size().
     void add_points(const std::vector<glm::vec3>& points, const std::vector<glm::vec3>& colors, float size = 8.0f);
 
-    //! The box around everything added (a unit box [-1,1]³ when the scene is empty).
+    //! Adds an overlay rectangle (see Rect). Empty or inverted rectangles draw nothing.
+    void add_rect(glm::vec2 lo, glm::vec2 hi, glm::vec4 color);
+
+    //! The box around the meshes, lines and points (the overlay has no place in space; a unit box [-1,1]³ when
+    //! there are none).
     Box bounds() const;
-    //! True when nothing has been added.
-    bool empty() const { return meshes_.empty() && lines_.empty() && points_.empty(); }
-    //! Removes all meshes, lines and points (keeps the background).
+    //! True when nothing has been added (the overlay included).
+    bool empty() const { return meshes_.empty() && lines_.empty() && points_.empty() && overlay_.empty(); }
+    //! Removes all meshes, lines, points and overlay rectangles (keeps the background).
     void clear();
 
     const std::vector<Mesh>& meshes() const { return meshes_; }
     const std::vector<Lines>& lines() const { return lines_; }
     const std::vector<Points>& points() const { return points_; }
+    const std::vector<Rect>& overlay() const { return overlay_; }
 
 private:
     enum class ColorMode { Uniform, PerVertex, PerFace };
@@ -86,6 +101,7 @@ private:
     std::vector<Mesh> meshes_;
     std::vector<Lines> lines_;
     std::vector<Points> points_;
+    std::vector<Rect> overlay_;
 };
 
 }  // namespace geolab::render

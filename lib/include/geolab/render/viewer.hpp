@@ -3,7 +3,8 @@
 //! An interactive window (GLFW, GL 3.3 core) for demos and lectures.
 //!
 //! Mouse: left drag orbits, right drag (or shift + left drag) pans, scroll zooms; a left click without drag
-//! calls the pick callback with the world-space ray under the cursor. Keys: Esc closes, S saves a screenshot
+//! calls the pick callback with the world-space ray under the cursor. A mouse callback (on_mouse) sees every
+//! press first and may capture that drag (a slider, a control point) instead. Keys: Esc closes, S saves a screenshot
 //! (out/screenshots/geolab_screenshot_N.png under the working directory), Home re-frames the scene; every other
 //! key goes to the key callback. An exception thrown by a callback closes the window and is rethrown by run() /
 //! run_frames(). Without a display the constructor throws NoDisplay; programs catch it and suggest `--png FILE`.
@@ -17,6 +18,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "geolab/render/camera.hpp"
 #include "geolab/render/image.hpp"
@@ -29,6 +31,16 @@ namespace geolab::render {
 class NoDisplay : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
+};
+
+//! A mouse button event or a move of a captured drag (Viewer::on_mouse), in the window's screen units with
+//! (0, 0) the top-left corner (what Camera::ray takes with `width`, `height`).
+struct MouseEvent {
+    enum class Phase { press, move, release };
+    Phase phase = Phase::press;
+    double x = 0.0, y = 0.0;    //!< the cursor
+    int width = 0, height = 0;  //!< the window
+    bool secondary = false;     //!< the right button, or the left one with Shift (the pan gesture)
 };
 
 //! True when a display is configured and GLFW can connect to it (a window can probably be opened).
@@ -69,15 +81,24 @@ public:
     const Camera& camera() const;
     //! A status line shown in the title bar after the title ("title — status").
     void set_status(std::string status);
+    //! Rectangles drawn over the scene (widgets, text; see Scene::Rect), kept when the scene is replaced.
+    void set_overlay(std::vector<Scene::Rect> overlay);
 
     //! Called on key press (and repeat) with the GLFW key code; letters are their upper-case ASCII code
     //! ('N'), digits '0'..'9', arrows GLFW_KEY_RIGHT etc. (262..265). Not called for Esc, S and Home.
     void on_key(std::function<void(int key)> callback);
     //! Called on a left click without drag with the world-space ray under the cursor (see pick.hpp).
     void on_pick(std::function<void(const Ray& ray)> callback);
-    //! Called before every frame with the seconds since run() started; while set, the window redraws
-    //! continuously (for animations) instead of waiting for input.
-    void on_frame(std::function<void(double seconds)> callback);
+    //! Called first when a mouse button goes down (Phase::press). Returning true captures the drag: its moves
+    //! and its release go to this callback too (returns ignored), and the camera does not move, nor is a pick
+    //! made. Returning false leaves the press to orbit, pan and pick.
+    void on_mouse(std::function<bool(const MouseEvent&)> callback);
+    //! Called before every frame with the seconds since run() started. While it returns true the window redraws
+    //! continuously (an animation); after false it waits for input before the next frame.
+    void on_frame(std::function<bool(double seconds)> callback);
+    //! Called before every frame is drawn, after the input that came in since the last one (e.g. to redraw a
+    //! demo once for a burst of mouse moves).
+    void on_before_draw(std::function<void()> callback);
 
     //! Shows the window until it is closed (Esc, the close button or close()). Sleeps until input arrives
     //! unless on_frame is set.
