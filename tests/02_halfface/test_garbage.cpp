@@ -126,7 +126,6 @@ TEST_SUITE("Task 3: deletion and garbage collection") {
     }
 
     TEST_CASE("delete_vertex: removes the vertex / its cells and its edges" * geolab::points(2) *
-              geolab::builds_on("Task 2") *
               geolab::hint("Delete every cell at v (delete_cell), then mark v and its edges deleted.")) {
         Mesh m = stored_mesh("tet grid 2");
         const CellList cl = fx::tet_grid(2, 0.3);
@@ -151,7 +150,6 @@ TEST_SUITE("Task 3: deletion and garbage collection") {
     }
 
     TEST_CASE("garbage_collection: compacts every kind in order and returns the maps" * geolab::points(3) *
-              geolab::builds_on("Task 2") *
               geolab::hint("New index = number of alive elements before it; half-faces 2f, 2f+1 -> 2f', 2f'+1; renumber "
                            "every stored handle (remap_handles) before compacting the arrays (compact).")) {
         Mesh m = stored_mesh("tet grid 3");
@@ -207,7 +205,6 @@ TEST_SUITE("Task 3: deletion and garbage collection") {
     }
 
     TEST_CASE("garbage_collection: dynamic properties follow their elements" * geolab::points(3) *
-              geolab::builds_on("Task 2") *
               geolab::hint("Compact each kind's properties with the same map (compact_properties).")) {
         Mesh m = stored_mesh("hex grid 2");
         auto pc = m.add_property<Kind::cell, std::int32_t>("old cell");

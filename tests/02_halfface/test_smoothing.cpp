@@ -139,6 +139,7 @@ TEST_SUITE("Task 4: smoothing") {
     }
 
     TEST_CASE("smoothing: deleted cells and vertices / meshes without tetrahedra" * geolab::points(2) *
+              geolab::builds_on("Task 2") *
               geolab::hint("Only alive tetrahedra count for the minimum volume (+infinity when there is none); a vertex "
                            "marked deleted is not interior and keeps its position.")) {
         // the tet of smallest volume deleted (through the kernel): it no longer counts

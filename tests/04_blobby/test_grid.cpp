@@ -161,6 +161,7 @@ TEST_SUITE("Task 3: fast evaluation") {
     }
 
     TEST_CASE("grid: evaluate with large blobs (R from 1.2 to 3.2): every blob that reaches p counts" * geolab::points(1) *
+              geolab::builds_on("Task 1") *
               geolab::hint("Skipping a listed blob must depend on its own R (a blob contributes 0 from r = R on), not on a "
                            "fixed distance.")) {
         Rng rng(67);

@@ -84,6 +84,7 @@ TEST_SUITE("Task 3: measures") {
     TEST_CASE("arc length: the contract's rule (cut at the speed's stationary points; shares of tol); tol below "
               "rounding; |C'| not finite" *
               geolab::points(2) *
+              geolab::builds_on("Task 1, Task 2") *
               geolab::hint("Cut [a, b] at the roots of C' · C'' (the speed's extremes; a cusp is one). On each piece keep "
                            "an interval when its 5- and 10-point values differ by at most tol · (its length) / (b − a); "
                            "otherwise halve it. Refuse a hodograph point whose length is not finite (handout §4).")) {

@@ -142,6 +142,7 @@ TEST_SUITE("Task 5: tensor-product patches") {
     TEST_CASE("patch normal where S_u × S_v counts as 0: the threshold; the first-order term with S_uu and S_vv; "
               "σ at ½; the 1e-6 step; a point patch" *
               geolab::points(2) *
+              geolab::builds_on("Task 1, Task 2") *
               geolab::hint("|S_u × S_v| ≤ 1e-12 (|S_u| + |S_v|)² counts as 0. Then the direction of (σ_u S_uu + σ_v S_uv) × "
                            "S_v + S_u × (σ_u S_uv + σ_v S_vv), σ = +1 for a parameter ≤ ½, else −1; if that is exactly 0, "
                            "the normal at (u + σ_u 1e-6, v + σ_v 1e-6); if that is 0 too, (0, 0, 1) (handout §6).")) {
@@ -218,6 +219,7 @@ TEST_SUITE("Task 5: tensor-product patches") {
 
     TEST_CASE("tessellation: vertex order; the weld rule (earliest border vertex within weld_tol); collapsed edges" *
               geolab::points(2) *
+              geolab::builds_on("Task 1, Task 2") *
               geolab::hint("Patches in order, samples i-major. A border sample within weld_tol (distance ≤ weld_tol) of "
                            "an earlier border vertex IS the earliest such vertex; interior samples are always new. "
                            "Drop a triangle with two equal vertices (handout §6).")) {
@@ -279,6 +281,7 @@ TEST_SUITE("Task 5: tensor-product patches") {
 
     TEST_CASE("tessellation: (n + 1)² samples per patch; 2n² triangles turning like S_u × S_v; borders shared" *
               geolab::points(2) *
+              geolab::builds_on("Task 1") *
               geolab::hint("Triangles (i,j)(i+1,j)(i+1,j+1) and (i,j)(i+1,j+1)(i,j+1); weld only border samples closer "
                            "than weld_tol; flip reverses triangles and normals.")) {
         Rng rng(43);

@@ -193,7 +193,7 @@ TEST_SUITE("Task 4: revolution") {
         CHECK_MESSAGE((same.outer == inside.outer && same.holes == inside.holes), "a profile at x > 0 comes back unchanged");
     }
 
-    TEST_CASE("revolve; clip_to_axis: bad input is rejected" * geolab::points(1) * geolab::builds_on("Task 1") *
+    TEST_CASE("revolve; clip_to_axis: bad input is rejected" * geolab::points(1) * geolab::builds_on("Task 1, Task 2") *
               geolab::hint("std::invalid_argument for segments < 3, angle ≤ 0 or > 2π, a hole reaching the axis, a "
                            "profile with nothing at x ≥ 0, an invalid profile.")) {
         const Profile p = issue_profile();

@@ -135,7 +135,7 @@ TEST_SUITE("Task 6: sweeps") {
     }
 
     TEST_CASE("check_sweep: a profile wider than the path's radius of curvature is reported; lib confirms" *
-              geolab::points(2) * geolab::builds_on("Task 1") *
+              geolab::points(2) * geolab::builds_on("Task 1, Task 2") *
               geolab::hint("Circumradius of each three consecutive samples: |a||b||c| / (2|(b − a) × (c − a)|); compare "
                            "the smallest with the profile's largest distance from (0, 0).")) {
         const Path path = ring_path(2, 48);

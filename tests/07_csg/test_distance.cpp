@@ -253,6 +253,7 @@ TEST_SUITE("Task 2: signed distances") {
     }
 
     TEST_CASE("sdf (prepared): reads each leaf's prepared stretch and inverse; never M" * geolab::points(2) *
+              geolab::builds_on("Task 1") *
               geolab::hint("On a PreparedTree a leaf's value is stretch · primitive_distance(leaf, inverse · x): "
                            "prepare() computed both once; recomputing them from M for every sample is what made the "
                            "polygonization slow.")) {

@@ -440,6 +440,7 @@ TEST_SUITE("Task 5: combining interval lists") {
 
     TEST_CASE("ray_spans: a node whose box the line misses gets an empty list and is not entered; an empty A skips B "
               "in ∩ and −" * geolab::points(3) *
+              geolab::builds_on("Task 4") *
               geolab::hint("Check line_meets_box(world, lo, hi) first: a miss empties the node's list and its subtree "
                            "is not visited. After A's list: for ∩ and − an empty A means an empty result without "
                            "casting B; for ∪, B is still needed.")) {
@@ -493,6 +494,7 @@ TEST_SUITE("Task 5: combining interval lists") {
     }
 
     TEST_CASE("ray_spans: reads the prepared maps and not M; one list per node reused; refuses blends" * geolab::points(2) *
+              geolab::builds_on("Task 4") *
               geolab::hint("Leaves use the node's `inverse` for the ray and `normal_map` for the normals (computed once "
                            "by prepare). Resize lists to t.nodes.size(); throw when t.has_blend.")) {
         // an ellipsoid x²/4 + y² + z² ≤ 1 moved to (3, 0, 0); then its M overwritten: only the prepared maps are right

@@ -303,6 +303,7 @@ TEST_CASE("simplify: tolerance 0 merges only exact fits; a box with faces on coa
 
 TEST_CASE("simplify: the sign tests decide each of the 256 corner configurations (also with a stray point)" *
           geolab::points(1) *
+          geolab::builds_on("Task 1") *
           geolab::hint("Test (1): the inside corners are connected through cube edges, and so are the outside ones "
                        "(both, for every one of the 256 configurations). Test (2): each of the 19 sub-lattice points "
                        "that is not a corner (edge midpoints, face centres, the centre) has the sign of at least one "

@@ -125,7 +125,8 @@ TEST_SUITE("Task 5: combining interval lists") {
         }
     }
     TEST_CASE("ray_spans hidden: skipping by boxes never changes the spans (lines grazing the boxes too)" *
-              geolab::points(2) * geolab::hidden() *
+              geolab::points(2) *
+              geolab::builds_on("Task 4") * geolab::hidden() *
               geolab::hint("A node's box holds its whole solid: a line that misses it has no span there. Skip only "
                            "on line_meets_box, and for ∩ and − only after an empty A.")) {
         Rng rng(107);
