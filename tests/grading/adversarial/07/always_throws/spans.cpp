@@ -16,7 +16,7 @@ namespace geolab::csg {
 
 // Helper functions of your own can go here.
 
-std::vector<Span> primitive_spans(const Node& leaf, const Ray& r) {
+void primitive_spans(const Node& leaf, const Ray& r, std::vector<Span>& out) {
     throw std::invalid_argument(__func__);
 }
 

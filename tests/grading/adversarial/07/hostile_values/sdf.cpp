@@ -7,6 +7,7 @@
 namespace geolab::csg {
 
 double smooth_min(double, double, double) { return std::numeric_limits<double>::quiet_NaN(); }
+double sdf(const PreparedTree&, const glm::dvec3&) { return std::numeric_limits<double>::quiet_NaN(); }
 double sdf(const Tree&, const glm::dvec3&) { return std::numeric_limits<double>::quiet_NaN(); }
 
 }  // namespace geolab::csg

@@ -6,11 +6,10 @@
 
 namespace geolab::csg {
 
-std::vector<Span> primitive_spans(const Node&, const Ray&) {
+void primitive_spans(const Node&, const Ray&, std::vector<Span>& out) {
     const double nan = std::numeric_limits<double>::quiet_NaN();
-    std::vector<Span> out(10000, Span{nan, nan, glm::dvec3(nan), glm::dvec3(nan)});
+    out.assign(10000, Span{nan, nan, glm::dvec3(nan), glm::dvec3(nan)});
     out[0] = Span{5, -5, glm::dvec3(0), glm::dvec3(0)};
-    return out;
 }
 
 }  // namespace geolab::csg

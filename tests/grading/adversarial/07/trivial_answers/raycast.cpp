@@ -11,6 +11,10 @@
 
 namespace geolab::csg {
 
+std::optional<Hit> first_hit(const PreparedTree& t, const Ray& ray, double t_min, SpanLists& lists) {
+    return {};
+}
+
 std::optional<Hit> first_hit(const Tree& t, const Ray& ray, double t_min) {
     return {};
 }

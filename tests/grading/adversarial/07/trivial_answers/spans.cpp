@@ -16,8 +16,8 @@ namespace geolab::csg {
 
 // Helper functions of your own can go here.
 
-std::vector<Span> primitive_spans(const Node& leaf, const Ray& r) {
-    return {};
+void primitive_spans(const Node& leaf, const Ray& r, std::vector<Span>& out) {
+    return;
 }
 
 }  // namespace geolab::csg
