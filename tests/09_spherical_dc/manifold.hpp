@@ -24,19 +24,19 @@ inline geolab::SurfaceCheck surface_check(const PolygonSoup& soup, bool self_int
 // CHECK that the soup is a closed, oriented 2-manifold: no boundary, non-manifold or misoriented edge, no
 // non-manifold vertex, no repeated index; and no self-intersecting face pair when `self_intersections`.
 #define LAB09_CHECK_2_MANIFOLD(soup, label, self_intersections)                                                     \
-    do {                                                                                                             \
-        const ::geolab::SurfaceCheck sc_ = ::lab09::surface_check(soup, self_intersections);                         \
+    do {                                                                                                            \
+        const ::geolab::SurfaceCheck sc_ = ::lab09::surface_check(soup, self_intersections);                        \
         INFO(std::string(label) << ": " << sc_.summary());                                                          \
         CHECK_MESSAGE(sc_.faces > 0, "the mesh has no faces");                                                      \
         CHECK_MESSAGE(sc_.boundary_edges == 0, "boundary edges (holes, cracks): " << sc_.boundary_edges);           \
         CHECK_MESSAGE(sc_.non_manifold_edges == 0, "edges in more than 2 faces: " << sc_.non_manifold_edges);       \
-        CHECK_MESSAGE(sc_.non_manifold_vertices == 0,                                                                \
-                      "vertices whose faces make more than one fan: " << sc_.non_manifold_vertices);                 \
-        CHECK_MESSAGE(sc_.misoriented_edges == 0, "edges traversed twice the same way: " << sc_.misoriented_edges);  \
-        CHECK_MESSAGE(sc_.repeated_index_faces == 0, "faces with a repeated vertex: " << sc_.repeated_index_faces);  \
-        if (self_intersections)                                                                                      \
-            CHECK_MESSAGE(sc_.self_intersecting_pairs() == 0,                                                        \
-                          "self-intersecting face pairs (exact): " << sc_.self_intersecting_pairs());                \
+        CHECK_MESSAGE(sc_.non_manifold_vertices == 0,                                                               \
+                      "vertices whose faces make more than one fan: " << sc_.non_manifold_vertices);                \
+        CHECK_MESSAGE(sc_.misoriented_edges == 0, "edges traversed twice the same way: " << sc_.misoriented_edges); \
+        CHECK_MESSAGE(sc_.repeated_index_faces == 0, "faces with a repeated vertex: " << sc_.repeated_index_faces); \
+        if (self_intersections)                                                                                     \
+            CHECK_MESSAGE(sc_.self_intersecting_pairs() == 0,                                                       \
+                          "self-intersecting face pairs (exact): " << sc_.self_intersecting_pairs());               \
     } while (0)
 
 // The pieces a leaf must have vertices for (DualVertex's layout): a finest leaf's cell_surface with face_joins,
@@ -48,7 +48,8 @@ inline CellSurface expected_pieces(const Octree& t, const OctreeNode& nd) {
     CellSurface one;
     one.count = 1;
     for (int e = 0; e < 12; ++e)
-        if (((signs >> cell_edge_corners[e][0]) ^ (signs >> cell_edge_corners[e][1])) & 1) one.edges[0] |= std::uint16_t(1u << e);
+        if (((signs >> cell_edge_corners[e][0]) ^ (signs >> cell_edge_corners[e][1])) & 1)
+            one.edges[0] |= std::uint16_t(1u << e);
     return one;
 }
 
@@ -148,8 +149,8 @@ public:
 
 // The trilinear interpolant of values given at the lattice points of the Cartesian octree of `level` over
 // bounds() = [-1, 1]^3 (padding 0.05): -1 inside the block [lo, hi]^3 of lattice points, +1 elsewhere, except the
-// `holes` (lattice points set to +1) and the `islands` (set to -1). Its samples at the octree's lattice points are exactly these values.
-// lipschitz() == 0: the given octree is then complete.
+// `holes` (lattice points set to +1) and the `islands` (set to -1). Its samples at the octree's lattice points are
+// exactly these values. lipschitz() == 0: the given octree is then complete.
 class LatticeBlock final : public ScalarField {
 public:
     LatticeBlock(int level, int lo, int hi, std::vector<glm::ivec3> holes, std::vector<glm::ivec3> islands = {})

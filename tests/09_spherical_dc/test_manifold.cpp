@@ -3,6 +3,7 @@
 #include <bitset>
 #include <set>
 
+#include "geolab/grading/chain.hpp"
 #include "manifold.hpp"
 
 using namespace lab09;
@@ -64,7 +65,7 @@ std::size_t coarse_cut_leaves(const Octree& t, bool on_axis_only) {
 TEST_SUITE("Task 4: vertex placement") {
 
 TEST_CASE("place_vertices: a finest leaf gets one vertex per piece of its surface in DualVertex's layout" *
-          geolab::points(2) *
+          geolab::points(2) * geolab::builds_on("Task 1, Task 2") *
           geolab::hint("cell_surface(signs, face_joins(tree, leaf)) gives the pieces of a finest leaf: one vertex per "
                        "piece, consecutive from OctreeNode::vertex, vertex k with the edges of piece k and pieces = the "
                        "count; its QEF holds the crossings of its own piece's edges only. Handout §1.1.")) {
@@ -107,7 +108,8 @@ TEST_CASE("place_vertices: a finest leaf gets one vertex per piece of its surfac
     }
 }
 
-TEST_CASE("place_vertices: the two pieces of a cell between two balls stay on their own balls" * geolab::points(1) *
+TEST_CASE("place_vertices: the two pieces of a cell between two balls stay on their own balls" *
+          geolab::points(1) * geolab::builds_on("Task 1, Task 2") *
           geolab::hint("A piece's QEF holds only the crossings on its own edges, so its vertex lies on its own "
                        "surface; one QEF for the whole cell would put a vertex between the balls. Handout §1.1.")) {
     const DiagonalBalls f(5, {16, 16, 16}, 0.4, 0.2);
@@ -133,7 +135,7 @@ TEST_CASE("place_vertices: the two pieces of a cell between two balls stay on th
 }
 
 TEST_CASE("place_vertices: a leaf coarser than the finest level gets one vertex for all its crossings" *
-          geolab::points(1) *
+          geolab::points(1) * geolab::builds_on("Task 1, Task 2") *
           geolab::hint("Only finest leaves are split into pieces; any other leaf with a sign change has ONE vertex "
                        "(pieces = 1) whose edges are all its sign-changing cell edges and whose QEF holds each of "
                        "their crossings once (the radial edge on the polar axis is two cell edges of a spherical cell "
@@ -182,7 +184,7 @@ TEST_CASE("place_vertices: a leaf coarser than the finest level gets one vertex 
 
 TEST_CASE("place_vertices: random corner signs on a small lattice (all 256 configurations and joined faces) in "
           "DualVertex's layout" *
-          geolab::points(1) *
+          geolab::points(1) * geolab::builds_on("Task 1, Task 2") *
           geolab::hint("Every finest leaf: the pieces of cell_surface(signs, face_joins(tree, leaf)) — do not skip "
                        "face_joins for any configuration that has an ambiguous face. Handout §1.1.")) {
     Lcg rng(21);
@@ -224,7 +226,7 @@ TEST_CASE("place_vertices: random corner signs on a small lattice (all 256 confi
 TEST_SUITE("Task 5: simplification") {
 
 TEST_CASE("simplify: a cell with two pieces never merges: two nearly touching balls stay two closed surfaces" *
-          geolab::points(1) *
+          geolab::points(1) * geolab::builds_on("Task 1, Task 2") *
           geolab::hint("Merge only when every child's own corner signs form a single sheet (one piece, no ambiguous "
                        "face) besides Ju et al.'s tests: one vertex for the parent would join the balls. Handout §1.1.")) {
     const DiagonalBalls f(5, {16, 16, 16}, 0.4, 0.2);
@@ -240,7 +242,7 @@ TEST_CASE("simplify: a cell with two pieces never merges: two nearly touching ba
 }
 
 TEST_CASE("simplify: a merged leaf has one vertex holding the parent's sign-changing edges (DualVertex's layout)" *
-          geolab::points(1) *
+          geolab::points(1) * geolab::builds_on("Task 1, Task 2") *
           geolab::hint("The new leaf's vertex: pieces = 1 and edges = the sign-changing edges of the parent's own "
                        "cell (from its corner signs), so contour can treat it like any one-vertex leaf. Handout §1.1.")) {
     for (const char* name : {"csg", "rounded_box", "box"}) {
@@ -537,7 +539,7 @@ TEST_CASE("contour (spherical level 1): the two quads that join the same 4 verti
 TEST_SUITE("Task 7: Cartesian one-shot") {
 
 TEST_CASE("dual_contour_cartesian: cow and armadillo at level 5 are closed 2-manifolds without self-intersections" *
-          geolab::points(2) * geolab::time_limit(60) *
+          geolab::points(2) * geolab::whole_chain() * geolab::time_limit(60) *
           geolab::hint("Thin legs and ears put two sheets of the surface in one finest cell: one vertex per piece "
                        "keeps them apart (handout §1.1); the QEF minimiser outside the cell gives way to the mass "
                        "point, and each quad takes the diagonal that does not fold.")) {
@@ -556,7 +558,8 @@ TEST_CASE("dual_contour_cartesian: cow and armadillo at level 5 are closed 2-man
 
 TEST_SUITE("Task 10: spherical octree") {
 
-TEST_CASE("dual_contour_spherical: cow and armadillo at level 5 are closed 2-manifolds" * geolab::points(2) *
+TEST_CASE("dual_contour_spherical: cow and armadillo at level 5 are closed 2-manifolds" *
+          geolab::points(2) * geolab::whole_chain() *
           geolab::time_limit(60) *
           geolab::hint("The spherical cells are cubes of the (r, theta, phi) lattice: the same pieces, face_joins "
                        "and polygons as on the Cartesian tree, across the phi seam; each pole ring takes the piece "

@@ -1,4 +1,5 @@
 // Lab 09, hidden: manifold dual contouring on real models and spherical trees (handout §1.1).
+#include "geolab/grading/chain.hpp"
 #include "../manifold.hpp"
 
 using namespace lab09;
@@ -23,7 +24,8 @@ struct Bunny {
 
 TEST_SUITE("Task 4: vertex placement") {
 
-TEST_CASE("place_vertices hidden (spherical): one vertex per piece on the bunny's spherical tree" * geolab::points(1) *
+TEST_CASE("place_vertices hidden (spherical): one vertex per piece on the bunny's spherical tree" *
+          geolab::points(1) * geolab::builds_on("Task 1, Task 2") *
           geolab::hidden() * geolab::time_limit(60) *
           geolab::hint("Spherical finest leaves get one vertex per piece of cell_surface(signs, face_joins) too, in "
                        "DualVertex's layout; the polar axis edge's two copies in a cell are one piece.")) {
@@ -42,7 +44,7 @@ TEST_CASE("place_vertices hidden (spherical): one vertex per piece on the bunny'
 TEST_SUITE("Task 5: simplification") {
 
 TEST_CASE("simplify hidden: csg; torus and two nearly touching balls stay 2-manifolds at 0.05 to 0.5 h" *
-          geolab::points(1) * geolab::hidden() *
+          geolab::points(1) * geolab::builds_on("Task 1, Task 2") * geolab::hidden() *
           geolab::hint("No merge across a child with two pieces or an ambiguous face; Ju et al.'s sign tests for the "
                        "rest. Non-manifold vertices count too, not only edges.")) {
     const DiagonalBalls balls(5, {16, 16, 16}, 0.4, 0.2);
@@ -89,7 +91,8 @@ TEST_CASE("contour hidden: the bunny's spherical tree (cells with two pieces and
 
 TEST_SUITE("Task 7: Cartesian one-shot") {
 
-TEST_CASE("bunny hidden: Cartesian level 6 is a closed 2-manifold without self-intersections" * geolab::points(1) *
+TEST_CASE("bunny hidden: Cartesian level 6 is a closed 2-manifold without self-intersections" *
+          geolab::points(1) * geolab::whole_chain() *
           geolab::hidden() * geolab::time_limit(60) *
           geolab::hint("One vertex per piece, polygons through the piece crossing each edge, QEF minimisers outside "
                        "their cells replaced by mass points, the non-folding diagonal.")) {
@@ -105,7 +108,8 @@ TEST_CASE("bunny hidden: Cartesian level 6 is a closed 2-manifold without self-i
 
 TEST_SUITE("Task 10: spherical octree") {
 
-TEST_CASE("bunny hidden: spherical level 6 is a closed 2-manifold without self-intersections" * geolab::points(1) *
+TEST_CASE("bunny hidden: spherical level 6 is a closed 2-manifold without self-intersections" *
+          geolab::points(1) * geolab::whole_chain() *
           geolab::hidden() * geolab::time_limit(60) *
           geolab::hint("The same manifold rules on the spherical tree, with both pole rings filled.")) {
     const PolygonSoup input = load_model("bunny00");

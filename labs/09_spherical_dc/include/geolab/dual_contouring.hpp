@@ -14,7 +14,22 @@
 //!   6. build_spherical_octree                                     (spherical_octree.cpp)
 //!   7. fill_poles (normal and vertical projection)                (poles.cpp)
 //!   dual_contour_cartesian / dual_contour_spherical chain the steps (contour.cpp, spherical_octree.cpp).
-//! Given (not tasks): the Octree data structure (lattice, cached samples, point location), the mesh checks.
+//! Given (not tasks): the Octree data structure (lattice, cached samples, point location), the mesh checks, the
+//! surface pieces of a cell (cell_surface, face_joins).
+//!
+//! The graded tasks (handout "Tasks and points") and the file each is written in:
+//! | task | file |
+//! | 1 | qef.cpp |
+//! | 2 | spherical.cpp |
+//! | 3 | octree.cpp |
+//! | 4 | contour.cpp |
+//! | 5 | contour.cpp |
+//! | 6 | contour.cpp |
+//! | 7 | contour.cpp |
+//! | 8 | origin.cpp |
+//! | 9 | origin.cpp |
+//! | 10 | spherical_octree.cpp |
+//! | 11 | poles.cpp |
 //!
 //! Conventions used throughout:
 //!  - Inside/outside: f(p) ≤ 0 is inside (one tie rule everywhere, `inside(v)` below).
