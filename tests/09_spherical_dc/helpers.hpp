@@ -29,6 +29,7 @@
 #include "geolab/mesh_field.hpp"
 #include "geolab/models.hpp"
 #include "geolab/soup.hpp"
+#include "geolab/surface_checks.hpp"
 
 namespace lab09 {
 
@@ -178,11 +179,25 @@ inline double max_abs_f(const ScalarField& f, const PolygonSoup& soup) {
     return m;
 }
 
-// Both the lab's given mesh check and the independent edge map must call the soup a closed oriented manifold.
+// Vertices whose faces make more than one fan (lib's check_surface); 0 for a soup it cannot read (bad indices, faces
+// of fewer than 3 vertices: the checks below report those).
+inline std::size_t non_manifold_vertices(const PolygonSoup& soup) {
+    geolab::CheckOptions o;
+    o.self_intersections = false;
+    try {
+        return geolab::check_surface(soup, o).non_manifold_vertices;
+    } catch (const std::invalid_argument&) {
+        return 0;
+    }
+}
+
+// Both the lab's given mesh check and the independent edge map must call the soup a closed oriented manifold, and
+// lib's check_surface must find no vertex whose faces make more than one fan.
 #define LAB09_CHECK_CLOSED_MANIFOLD(soup, label)                                                              \
     do {                                                                                                      \
         const ::lab09::EdgeReport er_ = ::lab09::edge_report(soup);                                           \
         const ::geolab::dc::MeshCheck mc_ = ::geolab::dc::check_mesh(soup);                                   \
+        const std::size_t nmv_ = ::lab09::non_manifold_vertices(soup);                                        \
         const std::string label_ = std::string(label);                                                        \
         INFO(label_ << ": " << ::lab09::describe(er_));                                                       \
         CHECK_MESSAGE(er_.faces > 0, "the mesh has no faces");                                               \
@@ -194,6 +209,7 @@ inline double max_abs_f(const ScalarField& f, const PolygonSoup& soup) {
         CHECK_MESSAGE(er_.non_triangles == 0, "faces that are not triangles: " << er_.non_triangles);         \
         CHECK_MESSAGE(mc_.closed_manifold(), "check_mesh disagrees: boundary " << mc_.boundary_edges          \
                                                  << ", non-manifold " << mc_.non_manifold_edges);             \
+        CHECK_MESSAGE(nmv_ == 0, "vertices whose faces make more than one fan: " << nmv_);                    \
     } while (0)
 
 // ---- spherical coordinates, computed here without the lab's functions ------------------------------------------
@@ -713,9 +729,10 @@ inline Octree given_octree(const ScalarField& f, int level, double padding = 0.0
 }
 
 // What contour (Task 6) needs from place_vertices (Task 4), made here: every leaf's signs (bit c set when corner c
-// is inside, f <= 0) and, in each leaf whose corners are not all on one side, one vertex at the mean of the
-// crossings of its sign-changing edges by linear interpolation of the corner values (inside the cell; no QEF, so
-// no sharp corners). contour must work with any vertex inside its cell.
+// is inside, f <= 0) and, in each leaf whose corners are not all on one side, its vertices as DualVertex's layout
+// says: a finest leaf one per piece of cell_surface(signs, face_joins) (given code), any other leaf one; each at the
+// mean of the crossings of its piece's edges by linear interpolation of the corner values (inside the cell; no QEF,
+// so no sharp corners). contour must work with any vertex inside its cell.
 inline void given_vertices(Octree& t) {
     t.vertices.clear();
     for (std::uint32_t li : t.leaves()) {
@@ -726,26 +743,37 @@ inline void given_vertices(Octree& t) {
         for (int c = 0; c < 8; ++c) v[c] = t.value(t.corner(nd, c)), signs |= int(inside(v[c])) << c;
         nd.signs = std::uint8_t(signs);
         if (signs == 0 || signs == 0xff) continue;
-        glm::dvec3 sum(0.0);
-        int n = 0;
-        for (int a = 0; a < 3; ++a)
-            for (int c = 0; c < 8; ++c) {
-                const int d = c | (1 << a);
-                if (c == d || inside(v[c]) == inside(v[d])) continue;
+        CellSurface pieces;
+        if (nd.level == t.max_level) {
+            pieces = cell_surface(nd.signs, face_joins(t, nd));
+        } else {
+            pieces.count = 1;
+            for (int e = 0; e < 12; ++e)
+                if (inside(v[cell_edge_corners[e][0]]) != inside(v[cell_edge_corners[e][1]]))
+                    pieces.edges[0] |= std::uint16_t(1u << e);
+        }
+        nd.vertex = std::uint32_t(t.vertices.size());
+        for (int k = 0; k < pieces.count; ++k) {
+            glm::dvec3 sum(0.0);
+            int n = 0;
+            for (int e = 0; e < 12; ++e) {
+                if (!((pieces.edges[k] >> e) & 1)) continue;
+                const int c = cell_edge_corners[e][0], d = cell_edge_corners[e][1];
                 const double s = v[c] / (v[c] - v[d]);
                 sum += t.lattice_point(t.corner(nd, c)) + s * (t.lattice_point(t.corner(nd, d)) -
                                                                t.lattice_point(t.corner(nd, c)));
                 ++n;
             }
-        nd.vertex = std::uint32_t(t.vertices.size());
-        t.vertices.push_back(DualVertex{sum / double(n), Qef{}});
+            t.vertices.push_back(DualVertex{sum / double(n), Qef{}, pieces.edges[k], std::uint8_t(pieces.count)});
+        }
     }
 }
 
 // An adaptive Cartesian tree without your simplify (Task 5): bottom-up, a node of level >= min_level whose 8 children
-// are leaves becomes a leaf when Ju et al.'s sign tests pass (its corners form one sheet; every edge midpoint, face
-// centre and the centre has the sign of a corner of its feature), computed here from the samples; its vertex is the
-// mean of the children's vertices (in the cell), or none when they have none. After given_vertices.
+// are leaves becomes a leaf when every child's corners form one sheet and Ju et al.'s sign tests pass (its corners
+// form one sheet; every edge midpoint, face centre and the centre has the sign of a corner of its feature), computed
+// here from the samples; its vertex is the mean of the children's vertices (in the cell), or none when they have
+// none. After given_vertices (the children's signs).
 inline std::size_t given_collapse(Octree& t, int min_level) {
     auto connected = [](int mask) {
         if (mask == 0) return true;
@@ -772,6 +800,12 @@ inline std::size_t given_collapse(Octree& t, int min_level) {
         int mask = 0;
         for (int c = 0; c < 8; ++c) mask |= int(t.value(t.corner(nd, c)) <= 0.0) << c;
         if (!connected(mask) || !connected(~mask & 0xff)) continue;
+        bool children_sheet = true;  // every child's own corners one sheet: one piece each, no ambiguous face
+        for (int c = 0; c < 8; ++c) {
+            const int cs = t.nodes[nd.first_child + c].signs;
+            children_sheet = children_sheet && connected(cs) && connected(~cs & 0xff);
+        }
+        if (!children_sheet) continue;
         bool agree = true;
         for (int i = 0; i < 3 && agree; ++i)
             for (int j = 0; j < 3 && agree; ++j)
@@ -811,12 +845,17 @@ inline std::size_t given_collapse(Octree& t, int min_level) {
 // For every sign-changing minimal edge (no leaf around it is smaller than the leaf it was found in), the leaves in
 // the 4 quadrants around it (locate at the edge's midpoint +- half a finest cell along the other two axes; (b, c) =
 // (a + 1, a + 2) mod 3, quadrants (-,-), (+,-), (+,+), (-,+)), in that order when the edge's lower end is inside and
-// reversed otherwise, repeats dropped; a triangle, or a quad split along its shorter diagonal (equal diagonals:
-// either split). Spherical trees: radial edges on the polar axis give pole rings instead, edges on the inner sphere
-// are skipped. Slow and simple: for checking contour's output exactly.
+// reversed otherwise, repeats dropped; from each leaf the vertex of the piece crossing the edge (a leaf with several
+// vertices: the one whose DualVertex::edges holds a cell edge of the leaf with the edge's two ends); a triangle, or a
+// quad split along the diagonal whose two triangles both face the edge's outward direction when only one does (the
+// chord from the edge's lower to its upper lattice end, negated when the lower end is outside), else along its
+// shorter diagonal (equal diagonals: either split). Spherical trees: radial edges on the polar axis give pole rings
+// instead (each leaf the piece crossing the axis edge), edges on the inner sphere are skipped. Not for spherical
+// trees of level 1 (their quads at phi = 0 and pi join the same 4 vertices; the contract splits them apart). Slow
+// and simple: for checking contour's output exactly.
 struct ReferenceContour {
     using Tri = std::array<glm::dvec3, 3>;
-    std::vector<Tri> triangles;                         // from triangles and quads with a shorter diagonal
+    std::vector<Tri> triangles;                         // from triangles and quads with a decided diagonal
     std::vector<std::array<glm::dvec3, 4>> tie_quads;   // quads whose diagonals are equally long
     struct Ring {
         bool north = true;
@@ -834,14 +873,26 @@ inline ReferenceContour reference_contour(const Octree& t) {
     const std::int32_t n = t.resolution();
     const int qb[4] = {-1, +1, +1, -1}, qc[4] = {-1, -1, +1, +1};
     std::set<std::array<int, 6>> seen;  // edges by their canonical ends
-    auto position = [&](std::uint32_t leaf, const glm::ivec3& q0, int a) -> std::optional<glm::dvec3> {
+    // the vertex of `leaf` for the piece crossing the edge from q0 to q1 (along axis a)
+    auto position = [&](std::uint32_t leaf, const glm::ivec3& q0, const glm::ivec3& q1, int a) -> std::optional<glm::dvec3> {
         const OctreeNode& nd = t.nodes[leaf];
-        if (nd.vertex != invalid_index && nd.vertex < t.vertices.size()) return t.vertices[nd.vertex].position;
+        if (nd.vertex != invalid_index && nd.vertex < t.vertices.size()) {
+            const std::size_t n_pieces = t.vertices[nd.vertex].pieces;
+            if (n_pieces <= 1) return t.vertices[nd.vertex].position;
+            const glm::ivec3 k0 = t.canonical(q0), k1 = t.canonical(q1);
+            for (std::size_t k = 0; k < n_pieces && nd.vertex + k < t.vertices.size(); ++k)
+                for (int e = 0; e < 12; ++e)
+                    if ((t.vertices[nd.vertex + k].edges >> e) & 1 &&
+                        t.canonical(t.corner(nd, cell_edge_corners[e][0])) == k0 &&
+                        t.canonical(t.corner(nd, cell_edge_corners[e][1])) == k1)
+                        return t.vertices[nd.vertex + k].position;
+        }
         if (out.no_vertex.empty())
             out.no_vertex = "leaf " + std::to_string(leaf) + " (level " + std::to_string(int(nd.level)) + ", cell " +
                             std::to_string(nd.x) + ", " + std::to_string(nd.y) + ", " + std::to_string(nd.z) +
                             ") around the sign-changing edge from lattice point (" + std::to_string(q0.x) + ", " +
-                            std::to_string(q0.y) + ", " + std::to_string(q0.z) + ") along axis " + std::to_string(a);
+                            std::to_string(q0.y) + ", " + std::to_string(q0.z) + ") along axis " + std::to_string(a) +
+                            (nd.vertex == invalid_index ? ": no vertex" : ": no vertex whose piece crosses the edge");
         return std::nullopt;
     };
     for (std::uint32_t li : tree_shape(t).leaves) {
@@ -884,18 +935,23 @@ inline ReferenceContour reference_contour(const Octree& t) {
                 if (poly.size() < 3) continue;
                 std::vector<glm::dvec3> P;
                 for (std::uint32_t l : poly)
-                    if (auto p = position(l, q0, a)) P.push_back(*p);
+                    if (auto p = position(l, q0, q1, a)) P.push_back(*p);
                 if (P.size() != poly.size()) continue;
                 ++out.edges;
                 if (P.size() == 3) {
                     out.triangles.push_back({P[0], P[1], P[2]});
                     continue;
                 }
+                const glm::dvec3 outward = (in0 ? 1.0 : -1.0) * (t.lattice_point(q1) - t.lattice_point(q0));
+                auto faces_out = [&](int i, int j, int k) {
+                    return glm::dot(glm::cross(P[j] - P[i], P[k] - P[i]), outward) > 0.0;
+                };
+                const bool out02 = faces_out(0, 1, 2) && faces_out(0, 2, 3), out13 = faces_out(0, 1, 3) && faces_out(1, 2, 3);
                 const double d02 = glm::dot(P[2] - P[0], P[2] - P[0]), d13 = glm::dot(P[3] - P[1], P[3] - P[1]);
-                if (d02 < d13 * (1.0 - 1e-12)) {
+                if (out02 != out13 ? out02 : d02 < d13 * (1.0 - 1e-12)) {
                     out.triangles.push_back({P[0], P[1], P[2]});
                     out.triangles.push_back({P[0], P[2], P[3]});
-                } else if (d13 < d02 * (1.0 - 1e-12)) {
+                } else if (out02 != out13 || d13 < d02 * (1.0 - 1e-12)) {
                     out.triangles.push_back({P[0], P[1], P[3]});
                     out.triangles.push_back({P[1], P[2], P[3]});
                 } else {
@@ -926,7 +982,7 @@ inline ReferenceContour reference_contour(const Octree& t) {
             r.r_lo = t.lattice_spherical(q0).r;
             r.r_hi = t.lattice_spherical(q1).r;
             for (std::uint32_t l : ring)
-                if (auto p = position(l, q0, 0)) r.ring.push_back(*p);
+                if (auto p = position(l, q0, q1, 0)) r.ring.push_back(*p);
             out.rings.push_back(std::move(r));
         }
     }
@@ -986,7 +1042,7 @@ inline std::string compare_polygons(const PolygonSoup& s, const ReferenceContour
         for (int i = 0; i < count; ++i)
             if (extra++ < 2) first << "\n  unexpected triangle " << show(k);
     if (!missing && !extra && !bad) return "";
-    os << missing << " expected triangles missing (or wound the other way, or split along the longer diagonal), "
+    os << missing << " expected triangles missing (or wound the other way, split along the other diagonal, or from another piece's vertex), "
        << extra << " unexpected triangles; expected " << ref.triangles.size() + 2 * ref.tie_quads.size()
        << " triangles from " << ref.edges << " sign-changing minimal edges, got " << s.n_faces() << first.str();
     return os.str();

@@ -74,13 +74,14 @@ TEST_CASE("place_vertices: a vertex in exactly the leaves whose corners change s
     }
 }
 
-TEST_CASE("place_vertices: vertices are clamped into their cells when the QEF minimiser leaves them" *
+TEST_CASE("place_vertices: a QEF minimiser that leaves its cell gives way to the mass point" *
           geolab::points(2) * geolab::builds_on("Task 1, Task 2") *
-          geolab::hint("The QEF minimiser can be far outside the cell (nearly parallel planes, noisy normals): clamp "
-                       "it to the cell's box. Where it is inside, keep it unchanged. Handout §5.1.")) {
+          geolab::hint("The QEF minimiser can be far outside the cell (nearly parallel planes, noisy normals): then "
+                       "take the mass point (the mean of the crossings, inside the cell) instead. Where the minimiser "
+                       "is inside, keep it unchanged. Handout §5.1.")) {
     const WobblyPlane f(0.1234);
     const Octree t = tree_with_vertices(f, 4);
-    std::size_t outside = 0, solved_outside = 0, moved = 0, n = 0;
+    std::size_t outside = 0, solved_outside = 0, moved = 0, not_mass = 0, n = 0;
     std::ostringstream first;
     const double h = t.size / t.resolution();
     for (std::uint32_t li : tree_shape(t).leaves) {
@@ -92,7 +93,7 @@ TEST_CASE("place_vertices: vertices are clamped into their cells when the QEF mi
         const DualVertex& v = t.vertices[nd.vertex];
         const glm::dvec3 x = v.qef.solve(0.01);
         const double out = box_outside(b, v.position);
-        if (box_outside(b, x) > 1e-9 * h) ++solved_outside;
+        if (box_outside(b, x) > 1e-9 * h) ++solved_outside, not_mass += glm::length(v.position - v.qef.mass_point()) > 1e-9 * h;
         else if (glm::length(v.position - x) > 1e-9 * h) ++moved;
         if (out > 1e-9 * h && outside++ < 3)
             first << "\n  cell [" << str(b.lo) << ", " << str(b.hi) << "] has its vertex at " << str(v.position);
@@ -103,6 +104,7 @@ TEST_CASE("place_vertices: vertices are clamped into their cells when the QEF mi
     REQUIRE(solved_outside > 0);
     CHECK_MESSAGE(outside == 0, outside << " vertices lie outside their cells" << first.str());
     CHECK_MESSAGE(moved == 0, moved << " vertices differ from their QEF minimiser although it lies in the cell");
+    CHECK_MESSAGE(not_mass == 0, not_mass << " vertices whose QEF minimiser leaves the cell are not its mass point");
 }
 
 TEST_CASE("place_vertices: the cells at a box's corners get the exact corners; every vertex is on the box" *
@@ -304,7 +306,8 @@ TEST_CASE("simplify: tolerance 0 merges only exact fits; a box with faces on coa
 TEST_CASE("simplify: the sign tests decide each of the 256 corner configurations (also with a stray point)" *
           geolab::points(1) *
           geolab::builds_on("Task 1") *
-          geolab::hint("Test (1): the inside corners are connected through cube edges, and so are the outside ones "
+          geolab::hint("Test (0): every child's own corner signs form one sheet (one piece, no ambiguous face). "
+                       "Test (1): the inside corners are connected through cube edges, and so are the outside ones "
                        "(both, for every one of the 256 configurations). Test (2): each of the 19 sub-lattice points "
                        "that is not a corner (edge midpoints, face centres, the centre) has the sign of at least one "
                        "corner of its edge, face or cell. Read the 27 signs from the children's OctreeNode::signs. "
@@ -392,6 +395,7 @@ TEST_CASE("simplify: the sign tests decide each of the 256 corner configurations
             t.init_cartesian(*dummy, 1, lo, 2.0);
             const std::uint32_t first_child = t.split(0);
             int vertices = 0;
+            bool children_sheet = true;  // test (0): every child's own corners form one sheet
             for (int child = 0; child < 8; ++child) {
                 OctreeNode& ch = t.nodes[first_child + child];
                 int signs = 0;
@@ -401,6 +405,7 @@ TEST_CASE("simplify: the sign tests decide each of the 256 corner configurations
                     signs |= int((in >> (q.x + 3 * q.y + 9 * q.z)) & 1u) << c;
                 }
                 ch.signs = std::uint8_t(signs);
+                children_sheet = children_sheet && connected(signs) && connected(~signs & 0xff);
                 ch.vertex = invalid_index;
                 if (signs == 0 || signs == 0xff) continue;
                 ch.vertex = std::uint32_t(t.vertices.size());
@@ -416,7 +421,7 @@ TEST_CASE("simplify: the sign tests decide each of the 256 corner configurations
                 if (!(on ? (m & fc) : (~m & fc))) agree = false;
             }
             const bool sheet = connected(m) && connected(~m & 0xff);
-            const bool collapse = sheet && agree && (vertices == 0 || (m != 0 && m != 0xff));
+            const bool collapse = children_sheet && sheet && agree && (vertices == 0 || (m != 0 && m != 0xff));
             const std::size_t collapses = simplify(t, 1e-6, 0.01);  // Q = 0 up to rounding
             ++cases;
             const OctreeNode& root = t.nodes[0];
@@ -433,7 +438,8 @@ TEST_CASE("simplify: the sign tests decide each of the 256 corner configurations
                       << std::bitset<27>(in) << " (bit i + 3j + 9k)";
                 if (stray >= 0) first << " with point " << stray << " on neither side of its feature's corners";
                 first << ": one sheet " << (sheet ? "yes" : "no") << ", every point agrees with a corner of its "
-                      << "feature " << (agree ? "yes" : "no") << "; expected " << (collapse ? "a collapse" : "no collapse")
+                      << "feature " << (agree ? "yes" : "no") << ", every child's corners one sheet "
+                      << (children_sheet ? "yes" : "no") << "; expected " << (collapse ? "a collapse" : "no collapse")
                       << ", got " << collapses << " collapses, root " << (root.is_leaf() ? "a leaf" : "not a leaf");
                 if (root.is_leaf())
                     first << " with signs " << std::bitset<8>(root.signs) << ", vertex "
@@ -561,9 +567,10 @@ TEST_CASE("contour: exactly the contract's triangles on uniform and adaptive Car
           geolab::points(1) *
           geolab::hint("For every sign-changing minimal edge: the leaves in the quadrants (-,-), (+,-), (+,+), (-,+) "
                        "of the other two axes (b, c) = (a+1, a+2) mod 3, in that order when the edge's lower end is "
-                       "inside, reversed otherwise; repeated leaves dropped (a triangle); a quad split along its "
-                       "SHORTER diagonal. Adaptive trees: an edge is minimal when no leaf around it is smaller; emit it "
-                       "once. Handout §5.3.")) {
+                       "inside, reversed otherwise; repeated leaves dropped (a triangle); from a leaf with several "
+                       "vertices the one whose edges hold the edge; a quad split along the diagonal whose triangles "
+                       "both face outward when only one does, else the SHORTER one. Adaptive trees: an edge is minimal "
+                       "when no leaf around it is smaller; emit it once. Handout §5.3 and §1.1.")) {
     struct Case {
         FieldPtr f;
         int level, collapse_from;  // collapse_from > level: no collapse (a uniform band of finest leaves)

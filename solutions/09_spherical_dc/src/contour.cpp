@@ -26,7 +26,12 @@ struct CellEdge {
     int my_b, my_c;      // the cell's side of the edge along b and cax (−1 or +1): qb[quadrant], qc[quadrant]
     int dx[4], dy[4], dz[4];  // finest cells only: the cell in quadrant k is this cell + (dx, dy, dz)[k]
     int owner_below = 0;      // the axes (bits 1 << axis) along which the quadrant-0 cell is below this cell
+    int edge_in[4];           // the number of this edge as a cell edge of the cell in quadrant k (same size)
 };
+// The number of the cell edge along axis a whose lower end is corner c (bit a of c clear): cell_edge_corners order.
+constexpr int edge_number(int a, int c) {
+    return 4 * a + (a == 0 ? c >> 1 : a == 1 ? (c & 1) | ((c >> 2) << 1) : c);
+}
 constexpr std::array<CellEdge, 12> make_cell_edges() {
     std::array<CellEdge, 12> out{};
     int n = 0;
@@ -37,12 +42,14 @@ constexpr std::array<CellEdge, 12> make_cell_edges() {
             const int my_b = (c & (1 << b)) ? -1 : +1, my_c = (c & (1 << cax)) ? -1 : +1;
             int k = 0;
             while (qb[k] != my_b || qc[k] != my_c) ++k;
-            CellEdge e{c, c | (1 << a), a, k, b, cax, my_b, my_c, {}, {}, {}, 0};
+            CellEdge e{c, c | (1 << a), a, k, b, cax, my_b, my_c, {}, {}, {}, 0, {}};
             for (int j = 0; j < 4; ++j) {
                 int d[3] = {0, 0, 0};
                 d[b] = (qb[j] - my_b) / 2;
                 d[cax] = (qc[j] - my_c) / 2;
                 e.dx[j] = d[0], e.dy[j] = d[1], e.dz[j] = d[2];
+                // the cell in quadrant j has the edge on its upper side along b (cax) when it lies below (qb < 0)
+                e.edge_in[j] = edge_number(a, (qb[j] < 0) << b | (qc[j] < 0) << cax);
                 if (j == 0)
                     for (int axis = 0; axis < 3; ++axis) e.owner_below |= (d[axis] < 0) << axis;
             }
@@ -51,6 +58,35 @@ constexpr std::array<CellEdge, 12> make_cell_edges() {
     return out;
 }
 constexpr std::array<CellEdge, 12> cell_edges = make_cell_edges();
+constexpr bool same_numbering() {  // cell_edges[i] is cell edge i of the header's cell_edge_corners
+    for (int i = 0; i < 12; ++i)
+        if (cell_edges[i].c != cell_edge_corners[i][0] || cell_edges[i].d != cell_edge_corners[i][1]) return false;
+    return true;
+}
+static_assert(same_numbering());
+// Speed: the pieces of every sign configuration with no face joined (cell_surface), made once; and the
+// configurations with an ambiguous face, the only ones where face_joins can change them
+const std::array<CellSurface, 256>& plain_surfaces() {
+    static const std::array<CellSurface, 256> table = [] {
+        std::array<CellSurface, 256> t{};
+        for (int m = 0; m < 256; ++m) t[m] = cell_surface(std::uint8_t(m));
+        return t;
+    }();
+    return table;
+}
+constexpr std::array<bool, 256> make_ambiguous() {
+    std::array<bool, 256> out{};
+    for (int m = 0; m < 256; ++m)
+        for (int a = 0; a < 3; ++a)
+            for (int s = 0; s < 2; ++s) {
+                const int b = (a + 1) % 3, c = (a + 2) % 3, base = s << a;
+                const int p0 = base, p1 = base | 1 << b, p2 = base | 1 << b | 1 << c, p3 = base | 1 << c;
+                const int i0 = (m >> p0) & 1, i1 = (m >> p1) & 1, i2 = (m >> p2) & 1, i3 = (m >> p3) & 1;
+                if (i0 == i2 && i1 == i3 && i0 != i1) out[m] = true;
+            }
+    return out;
+}
+constexpr std::array<bool, 256> has_ambiguous_face = make_ambiguous();
 // edge_index.of[a][c]: the index in cell_edges of the edge from corner c along axis a (bit a of c clear)
 struct EdgeIndex {
     int of[3][8] = {};
@@ -223,6 +259,7 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params) {
         return spherical && (q.y == 0 || q.y == n_res || (q.x == 0 && tree.r_min == 0.0));
     };
     std::vector<Crossing> computed;  // the crossings of finest edges, by the index the grids hold
+    const std::array<CellSurface, 256>& surfaces = plain_surfaces();
     // Speed: in the conservative band about half the leaves are cut by the surface, each with about one new crossing;
     // reserving that much avoids most copies of these large arrays while they grow (7 of 8 nodes are leaves).
     const std::size_t leaves_estimate = tree.nodes.size() - tree.nodes.size() / 8;
@@ -248,24 +285,39 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params) {
         }
         return slot;
     };
-    // the QEF's minimiser kept in the cell with corners q0 (lowest) and q7 (highest) becomes leaf li's vertex
-    auto add_vertex = [&](std::uint32_t li, const Qef& qef, glm::ivec3 q0, glm::ivec3 q7) {
-        glm::dvec3 x = qef.solve(params.tau);
+    // The vertex of a piece in the cell with corners q0 (lowest) and q7 (highest): the QEF's minimiser when it lies in
+    // the cell, else the mass point (the mean of the piece's crossings), clamped into the cell. Clamping the minimiser
+    // instead would pile vertices onto the cell's faces and corners, two pieces of one cell onto the same point,
+    // and fold the mesh there (handout §1.1).
+    auto cell_vertex = [&](const Qef& qef, glm::ivec3 q0, glm::ivec3 q7) {
+        glm::dvec3 mass;
+        const glm::dvec3 x = qef.solve(params.tau, &mass);
         if (!spherical) {
-            x = glm::clamp(x, tree.lattice_point(q0), tree.lattice_point(q7));
-        } else {
-            Spherical lo = tree.lattice_spherical(q0), hi = tree.lattice_spherical(q7);
-            Spherical s = to_spherical(x - tree.origin);
+            const glm::dvec3 lo = tree.lattice_point(q0), hi = tree.lattice_point(q7);
+            const bool in_cell = !glm::any(glm::lessThan(x, lo)) && !glm::any(glm::greaterThan(x, hi));
+            return in_cell ? x : glm::clamp(mass, lo, hi);
+        }
+        const Spherical lo = tree.lattice_spherical(q0), hi = tree.lattice_spherical(q7);
+        // φ relative to the cell's lower bound, in [0, 2π): inside when ≤ the cell's width
+        const double w = hi.phi - lo.phi;
+        auto phi_offset = [&](const Spherical& s) { return std::fmod(s.phi - lo.phi + 4.0 * pi, 2.0 * pi); };
+        Spherical s = to_spherical(x - tree.origin);
+        if (s.r < lo.r || s.r > hi.r || s.theta < lo.theta || s.theta > hi.theta || phi_offset(s) > w) {
+            s = to_spherical(mass - tree.origin);
             s.r = std::clamp(s.r, lo.r, hi.r);
             s.theta = std::clamp(s.theta, lo.theta, hi.theta);
-            // φ relative to the cell's lower bound, in [0, 2π): inside when ≤ the cell's width
-            double w = hi.phi - lo.phi, d = std::fmod(s.phi - lo.phi + 4.0 * pi, 2.0 * pi);
+            double d = phi_offset(s);
             if (d > w) d = (d - w < 2.0 * pi - d) ? w : 0.0;
             s.phi = lo.phi + d;
-            x = tree.spherical_point(s);
         }
+        return tree.spherical_point(s);
+    };
+    // leaf li's vertices, one per piece of its surface: piece k holds the crossings of qef[k] on the edges edges[k]
+    auto add_vertices = [&](std::uint32_t li, const Qef* qef, const std::uint16_t* edges, int pieces, glm::ivec3 q0,
+                            glm::ivec3 q7) {
         tree.nodes[li].vertex = std::uint32_t(tree.vertices.size());
-        tree.vertices.push_back({x, qef});
+        for (int k = 0; k < pieces; ++k)
+            tree.vertices.push_back({cell_vertex(qef[k], q0, q7), qef[k], edges[k], std::uint8_t(pieces)});
     };
     // the radial edge on the polar axis appears twice in a cell there (φ-lower and φ-upper corners): count it once
     auto repeated_axis_edge = [&](const CellEdge& e, glm::ivec3 qc) {
@@ -282,15 +334,18 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params) {
             q[c] = tree.corner(nd, c), v[c] = tree.value(q[c]);
             nd.signs |= std::uint8_t(inside(v[c]) << c);
         }
+        // one vertex for all its crossings: its corners cannot tell its pieces apart where finer leaves see more
         const EdgeList& changing = changing_edges[nd.signs];
         Qef qef;
+        std::uint16_t edges = 0;
         for (int ei = 0; ei < changing.n; ++ei) {
             const CellEdge& e = cell_edges[changing.e[ei]];
+            edges |= std::uint16_t(1u << changing.e[ei]);
             if (repeated_axis_edge(e, q[e.c])) continue;
             const Crossing x = compute(q[e.c], q[e.d], v[e.c], v[e.d]);
             qef.add(x.point, x.normal);
         }
-        if (qef.count > 0) add_vertex(li, qef, q[0], q[7]);
+        if (qef.count > 0) add_vertices(li, &qef, &edges, 1, q[0], q[7]);
     };
     // Finest leaves come as the 8 children of a node of level L − 1: their 8 × 8 corners are the 27 points of the
     // parent's 3×3×3 sub-lattice, p = i + 3j + 9k, and their 8 × 12 edges are 54 edges of it. Speed: look the
@@ -328,17 +383,22 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params) {
             ch.signs = std::uint8_t((s & 0x3u) | ((s >> 1) & 0xcu) | ((s >> 5) & 0x30u) | ((s >> 6) & 0xc0u));
             ch.vertex = invalid_index;
             if (ch.signs == 0 || ch.signs == 0xff) continue;
+            // one vertex per piece of the cell's surface (its ambiguous faces drawn by face_joins)
+            const CellSurface* surface = &surfaces[ch.signs];
+            CellSurface joined;
+            if (has_ambiguous_face[ch.signs])
+                if (const std::uint8_t joins = face_joins(tree, ch)) surface = &(joined = cell_surface(ch.signs, joins));
             const EdgeList& changing = changing_edges[ch.signs];
-            Qef qef;
+            Qef qef[4];
             for (int ei = 0; ei < changing.n; ++ei) {
                 const CellEdge& e = cell_edges[changing.e[ei]];
                 const int p = simplify_tables.point[child][e.c];
                 if (spherical && repeated_axis_edge(e, base + sub_offset(p))) continue;
                 const Crossing& x = computed[index[27 * e.a + p]];
-                qef.add(x.point, x.normal);
+                qef[surface->piece_of(changing.e[ei])].add(x.point, x.normal);
             }
             const glm::ivec3 q0 = base + glm::ivec3(child & 1, (child >> 1) & 1, child >> 2);
-            if (qef.count > 0) add_vertex(first + child, qef, q0, q0 + 1);
+            add_vertices(first + child, qef, surface->edges, surface->count, q0, q0 + 1);
         }
     };
     // the leaves depth first, a group of finest siblings at once
@@ -374,10 +434,16 @@ std::size_t simplify(Octree& tree, double tolerance, double tau) {
         const std::int32_t s = tree.cell_span(nd.level);
         const glm::ivec3 base = tree.corner(nd, 0);
         // the signs at the 27 sub-lattice points (bit i + 3j + 9k): the children's corners, which place_vertices
-        // recorded in their sign configurations
+        // recorded in their sign configurations. (0) Every child's own corners form one sheet: one piece, no
+        // ambiguous face (else the merged vertex would join pieces, or a face of the parent would be crossed twice)
         std::uint32_t sub = 0;
-        for (int child = 0; child < 8; ++child)
-            sub |= simplify_tables.spread[child][tree.nodes[nd.first_child + child].signs];
+        bool children_single = true;
+        for (int child = 0; child < 8; ++child) {
+            const std::uint8_t signs = tree.nodes[nd.first_child + child].signs;
+            sub |= simplify_tables.spread[child][signs];
+            children_single = children_single && simplify_tables.single_sheet[signs];
+        }
+        if (!children_single) continue;
         // (1) the parent's corner signs form one sheet
         int in_mask = 0;
         for (int c = 0; c < 8; ++c) in_mask |= int((sub >> simplify_tables.point[c][c]) & 1u) << c;
@@ -402,7 +468,10 @@ std::size_t simplify(Octree& tree, double tolerance, double tau) {
             if (glm::any(glm::lessThan(x, lo - slack)) || glm::any(glm::greaterThan(x, hi + slack))) continue;
             if (std::sqrt(std::max(0.0, merged.error(x)) / merged.count) > tolerance) continue;
             new_vertex = std::uint32_t(tree.vertices.size());
-            tree.vertices.push_back({glm::clamp(x, lo, hi), merged});
+            std::uint16_t edges = 0;  // the parent's sign-changing cell edges
+            for (int e = 0; e < 12; ++e)
+                edges |= std::uint16_t((((in_mask >> cell_edge_corners[e][0]) ^ (in_mask >> cell_edge_corners[e][1])) & 1) << e);
+            tree.vertices.push_back({glm::clamp(x, lo, hi), merged, edges, 1});
         } else if (in_mask != 0 && in_mask != 0xff) {
             continue;  // sign changes without crossings: leave it alone
         }
@@ -420,6 +489,7 @@ PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles) {
     // BEGIN SOLUTION
     // a leaf as the polygons see it: node index, dual vertex (or invalid_index) and level. A finest leaf found
     // through the `finest` grid below has leaf == invalid_index when it has a vertex: the vertex identifies it.
+    // `vertex` is first the leaf's first vertex, then (piece()) the vertex of the piece that crosses the edge.
     struct LeafRef {
         std::uint32_t leaf = invalid_index, vertex = invalid_index;
         int level = 0;
@@ -447,7 +517,24 @@ PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles) {
     std::vector<glm::dvec3> position;
     position.reserve(tree.vertices.size());
     prefer_huge_pages(position);
-    for (const DualVertex& v : tree.vertices) position.push_back(v.position);
+    // and, in the same pass, each vertex's piece: its edges (bits 0-11) and its leaf's number of vertices (from bit 16)
+    std::vector<std::uint32_t> piece_data;
+    piece_data.reserve(tree.vertices.size());
+    for (const DualVertex& v : tree.vertices) {
+        position.push_back(v.position);
+        piece_data.push_back(std::uint32_t(v.edges) | std::uint32_t(v.pieces) << 16);
+    }
+    // the vertex standing for the piece that crosses cell edge e of the leaf whose first vertex is `first`
+    auto piece_vertex = [&](std::uint32_t first, int e) {
+        if (first == invalid_index) return first;
+        const std::uint32_t n = piece_data[first] >> 16;
+        if (n <= 1) return first;
+        for (std::uint32_t k = 0; k < n; ++k)
+            if ((piece_data[first + k] >> e) & 1u) return first + k;
+        throw TopologyError("contour: the leaf with vertices " + std::to_string(first) + " .. " +
+                            std::to_string(first + n - 1) + " has none whose edges hold its sign-changing edge " +
+                            std::to_string(e));
+    };
     auto soup_index = [&](std::uint32_t vertex) {
         if (remap[vertex] == invalid_index) {
             remap[vertex] = std::uint32_t(soup.positions.size());
@@ -506,13 +593,38 @@ PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles) {
         std::uint32_t l = tree.locate(p2);
         return l == invalid_index ? LeafRef{} : leaf_ref(l);
     };
-    auto emit_polygon = [&](const std::uint32_t* w, int m) {
+    // Level 1 of a spherical tree: the 2 φ cells share both their φ faces, so the polygons around the edges at φ = 0
+    // and at φ = π join the same 4 vertices; the second takes the other diagonal (the same one would cover the same
+    // two triangles twice). Each quad there: its sorted vertices and the diagonal it took.
+    std::vector<std::pair<std::array<std::uint32_t, 4>, std::pair<std::uint32_t, std::uint32_t>>> level1_quads;
+    // The polygon w[0 .. m) around the edge from lattice point q0 to q0 + span e_a (counter-clockwise about the edge's
+    // outward direction: +a when its lower end is inside). A quad is split along the diagonal whose two triangles
+    // both face outward (normal · outward direction > 0) when only one of the two does — the other would fold the
+    // mesh —, else along the shorter diagonal.
+    auto emit_polygon = [&](const std::uint32_t* w, int m, glm::ivec3 q0, int a, std::int32_t span, bool lower_inside) {
         if (m == 3) {
             soup.add_face({w[0], w[1], w[2]});
-        } else {  // split along the shorter diagonal
+        } else {
             const auto& P = soup.positions;
             const glm::dvec3 d02 = P[w[2]] - P[w[0]], d13 = P[w[3]] - P[w[1]];
-            if (glm::dot(d02, d02) <= glm::dot(d13, d13)) {
+            bool first = glm::dot(d02, d02) <= glm::dot(d13, d13);  // the diagonal w[0] w[2]
+            glm::ivec3 q1 = q0;
+            q1[a] += span;
+            const glm::dvec3 out = (lower_inside ? 1.0 : -1.0) * (tree.lattice_point(q1) - tree.lattice_point(q0));
+            auto faces_out = [&](int i, int j, int k) {
+                return glm::dot(glm::cross(P[w[j]] - P[w[i]], P[w[k]] - P[w[i]]), out) > 0.0;
+            };
+            const bool out02 = faces_out(0, 1, 2) && faces_out(0, 2, 3), out13 = faces_out(0, 1, 3) && faces_out(1, 2, 3);
+            if (out02 != out13) first = out02;
+            if (spherical && n_res == 2) {
+                std::array<std::uint32_t, 4> key{w[0], w[1], w[2], w[3]};
+                std::sort(key.begin(), key.end());
+                auto diagonal = [](std::uint32_t x, std::uint32_t y) { return std::pair(std::min(x, y), std::max(x, y)); };
+                for (const auto& [k, d] : level1_quads)
+                    if (k == key) first = d != diagonal(w[0], w[2]);
+                level1_quads.push_back({key, first ? diagonal(w[0], w[2]) : diagonal(w[1], w[3])});
+            }
+            if (first) {
                 soup.add_face({w[0], w[1], w[2]});
                 soup.add_face({w[0], w[2], w[3]});
             } else {
@@ -531,7 +643,7 @@ PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles) {
         bool emit = true;
         for (int k = 0; k < 4 && emit; ++k) {
             if (qb[k] == my_b && qc[k] == my_c) {
-                around[k] = LeafRef{li, nd.vertex, nd.level};
+                around[k] = LeafRef{li, piece_vertex(nd.vertex, e.edge_in[k]), nd.level};
                 continue;
             }
             glm::ivec3 p2 = m2;
@@ -541,6 +653,8 @@ PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles) {
             if (!around[k].found()) emit = false;  // outside the domain
             else if (around[k].level > nd.level) emit = false;  // not minimal here
             else {
+                // a leaf with several vertices is a finest one, as this leaf then: the edge is its cell edge edge_in[k]
+                around[k].vertex = piece_vertex(around[k].vertex, e.edge_in[k]);
                 // emit once: from the first quadrant holding a leaf as small as this one
                 bool before_me = false;
                 for (int j = 0; j < 4; ++j)
@@ -561,7 +675,7 @@ PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles) {
         if (m < 3) return;
         std::uint32_t w[4];
         for (int k = 0; k < m; ++k) w[k] = soup_vertex(poly[k]);
-        emit_polygon(w, m);
+        emit_polygon(w, m, tree.corner(nd, c), a, tree.cell_span(nd.level), nd.corner_inside(c));
     };
     // Speed (Cartesian): the 8 finest leaves of a node of level L − 1 as one group. Their corner signs are the 27
     // points of the node's 3×3×3 sub-lattice (bit p = i + 3j + 9k, as in simplify). The group emits the quads of the
@@ -602,8 +716,11 @@ PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles) {
                 if (all_finest) {
                     std::uint32_t w[4];
                     const bool lower_inside = (in >> p) & 1u;
-                    for (int k = 0; k < 4; ++k) w[k] = soup_index(around[lower_inside ? k : 3 - k]);
-                    emit_polygon(w, 4);
+                    for (int k = 0; k < 4; ++k) {
+                        const int j = lower_inside ? k : 3 - k;
+                        w[k] = soup_index(piece_vertex(around[j], g.edge[j]));
+                    }
+                    emit_polygon(w, 4, tree.corner(tree.nodes[first], 0) + sub_offset(p), a, 1, lower_inside);
                 } else {
                     const std::uint32_t li = first + std::uint32_t(g.child[0]);
                     if (v[g.child[0]] != invalid_index) general_edge(li, tree.nodes[li], cell_edges[g.edge[0]]);
@@ -643,8 +760,11 @@ PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles) {
                     if (v[1] != invalid_index && v[2] != invalid_index && v[3] != invalid_index) {
                         std::uint32_t w[4];
                         const bool lower_inside = nd.corner_inside(c);
-                        for (int k = 0; k < 4; ++k) w[k] = soup_index(v[lower_inside ? k : 3 - k]);
-                        emit_polygon(w, 4);
+                        for (int k = 0; k < 4; ++k) {
+                            const int j = lower_inside ? k : 3 - k;
+                            w[k] = soup_index(piece_vertex(v[j], e.edge_in[j]));
+                        }
+                        emit_polygon(w, 4, tree.corner(nd, c), a, 1, lower_inside);
                         continue;
                     }
                 }
@@ -665,7 +785,12 @@ PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles) {
                 p2.z = 2 * k + 1;
                 std::uint32_t l = tree.locate(p2);
                 if (l == invalid_index || tree.nodes[l].level > nd.level) minimal = false;
-                else if (ring.empty() || ring.back().leaf != l) ring.push_back(leaf_ref(l));
+                else if (ring.empty() || ring.back().leaf != l) {
+                    // the piece crossing the axis edge: cell edge 0 (north: corners 0, 1) or 1 (south: 2, 3)
+                    LeafRef r = leaf_ref(l);
+                    r.vertex = piece_vertex(r.vertex, north ? 0 : 1);
+                    ring.push_back(r);
+                }
             }
             if (!minimal) continue;  // cannot happen without simplification: all ring leaves are finest
             if (ring.size() > 1 && ring.back().same(ring.front())) ring.pop_back();

@@ -14,7 +14,22 @@
 //!   6. build_spherical_octree                                     (spherical_octree.cpp)
 //!   7. fill_poles (normal and vertical projection)                (poles.cpp)
 //!   dual_contour_cartesian / dual_contour_spherical chain the steps (contour.cpp, spherical_octree.cpp).
-//! Given (not tasks): the Octree data structure (lattice, cached samples, point location), the mesh checks.
+//! Given (not tasks): the Octree data structure (lattice, cached samples, point location), the mesh checks, the
+//! surface pieces of a cell (cell_surface, face_joins).
+//!
+//! The graded tasks (handout "Tasks and points") and the file each is written in:
+//! | task | file |
+//! | 1 | qef.cpp |
+//! | 2 | spherical.cpp |
+//! | 3 | octree.cpp |
+//! | 4 | contour.cpp |
+//! | 5 | contour.cpp |
+//! | 6 | contour.cpp |
+//! | 7 | contour.cpp |
+//! | 8 | origin.cpp |
+//! | 9 | origin.cpp |
+//! | 10 | spherical_octree.cpp |
+//! | 11 | poles.cpp |
 //!
 //! Conventions used throughout:
 //!  - Inside/outside: f(p) ≤ 0 is inside (one tie rule everywhere, `inside(v)` below).
@@ -188,11 +203,21 @@ struct OctreeNode {
 };
 static_assert(sizeof(OctreeNode) == 16, "an octree node is 16 bytes: 16-bit cell indices (levels <= 10)");
 
-//! A dual vertex: its position and the QEF it minimises (kept for simplification and for tests).
+//! A dual vertex: its position, the QEF it minimises (kept for simplification and for tests), and which piece of
+//! its leaf's surface it stands for.
+//! Layout (handout §1.1): a leaf's vertices are consecutive, tree.vertices[nd.vertex + k] for k = 0 .. pieces − 1
+//! (OctreeNode::vertex is the first); every one of them holds the same `pieces`. A finest leaf has one vertex per
+//! piece of cell_surface(signs, face_joins(tree, leaf)), in that order; any other leaf has one vertex (pieces = 1)
+//! holding all its sign-changing edges.
 struct DualVertex {
     glm::dvec3 position{0.0};
     Qef qef;
-    GEOLAB_FIELDS(position, qef)
+    //! The sign-changing edges of the leaf this vertex's piece crosses: bit e for cell edge e (numbering of
+    //! cell_edge_corners). The polygon around a minimal edge uses, in a leaf with several vertices, the one whose
+    //! `edges` holds the leaf's cell edge containing it.
+    std::uint16_t edges = 0;
+    std::uint8_t pieces = 1;  //!< how many vertices the leaf has (1 to 4)
+    GEOLAB_FIELDS(position, qef, edges, pieces)
 };
 
 //! A sparse map from lattice points to values of T, stored as dense blocks of B×B×B slots (B = 4; initialised to
@@ -533,6 +558,46 @@ private:
 };
 
 // =====================================================================================================================
+// The surface pieces of a cell (given: the tasks use them; handout §1.1)
+// =====================================================================================================================
+
+//! Cell edge e joins corners cell_edge_corners[e][0] (its lower end) and [1]: edges 0–3 run along x (r), 4–7 along
+//! y (θ), 8–11 along z (φ), e / 4 is the axis (the numbering of lib's mc_tables.hpp). Face 2a + s of a cell is
+//! the one normal to axis a on side s (0: the lower, where corner bit a is 0; 1: the upper).
+inline constexpr int cell_edge_corners[12][2] = {{0, 1}, {2, 3}, {4, 5}, {6, 7}, {0, 2}, {1, 3},
+                                                 {4, 6}, {5, 7}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
+
+//! The connected pieces of the surface inside a cell, as marching cubes draws them from the corner signs: on each
+//! face, a segment joins two crossed edges (the edges whose ends are on different sides); the segments of the six
+//! faces close into loops, and each loop is one piece. A face with four crossed edges (two inside corners on one
+//! diagonal: an ambiguous face) is drawn in one of two ways: the inside corners cut off separately (the default)
+//! or joined across the face (bit f of `joins`; face_joins() decides it so that the pieces make a manifold).
+struct CellSurface {
+    int count = 0;                //!< number of pieces, 0 to 4
+    std::uint16_t edges[4] = {};  //!< piece k: bit e for each crossed cell edge on its loop
+    //! The piece whose loop crosses cell edge e, or −1 when edge e is not crossed.
+    int piece_of(int e) const {
+        for (int k = 0; k < count; ++k)
+            if ((edges[k] >> e) & 1) return k;
+        return -1;
+    }
+};
+
+//! The pieces of a cell with corner signs `signs` (bit c: corner c inside, as OctreeNode::signs), ambiguous faces
+//! drawn as `joins` says (bit f: face f's inside corners joined; ignored on faces that are not ambiguous). Pieces
+//! are ordered by their lowest edge. With joins = 0 they are the polygons of lib's mc_tables.
+CellSurface cell_surface(std::uint8_t signs, std::uint8_t joins = 0);
+
+//! How the ambiguous faces of finest leaf `leaf` are drawn (bit f: join the inside corners of face f). The rule,
+//! which makes the dual mesh a 2-manifold (handout §1.1): the two inside corners p, q of an ambiguous face are
+//! joined exactly when they are connected through inside corners by cell edges in BOTH finest cells that share the
+//! face — in a cell, when the two corners next to p and q on the far face are inside and so is a third corner of
+//! the far face. Computed from the lattice samples alone (tree.value at the far faces' corners, φ wrapping), so
+//! both cells that share a face draw it alike; a face with no cell beyond (the domain's boundary) counts as not
+//! connected there. 0 for leaves coarser than the finest level (they get one vertex; handout §1.1).
+std::uint8_t face_joins(const Octree& tree, const OctreeNode& leaf);
+
+// =====================================================================================================================
 // Task 3 — the Cartesian octree (handout §4)
 // =====================================================================================================================
 
@@ -574,13 +639,17 @@ struct VertexParams {
     GEOLAB_FIELDS(tau, crossing_tolerance)
 };
 
-//! Task: give every leaf with a sign change on one of its 12 edges a dual vertex. For each such edge find the
-//! crossing (Cartesian: find_crossing on the segment; spherical: find_crossing_arc along the radial segment or the
-//! θ/φ arc, always from the edge's lower to its upper lattice end so that neighbours compute identical points),
-//! add it to the leaf's Qef, solve with params.tau, and keep the vertex in the cell: if the solution lies
-//! outside the cell, clamp it to the cell (Cartesian: the box; spherical: clamp r, θ and φ — φ measured
-//! relative to the cell, across the seam — to the cell's intervals). Edges that degenerate to a point (φ-edges on
-//! the polar axis, θ/φ-edges at r = 0) have no crossing; a radial edge on the axis is counted once.
+//! Task: give every leaf with a sign change on one of its 12 edges its dual vertices: a finest leaf one per piece of
+//! its surface, cell_surface(signs, face_joins(tree, leaf)), in that order; a coarser leaf one for all its
+//! crossings. Store them as DualVertex's layout says (consecutive from OctreeNode::vertex, each with its piece's
+//! `edges` and the leaf's number of vertices in `pieces`). For each sign-changing edge find the crossing
+//! (Cartesian: find_crossing on the segment; spherical: find_crossing_arc along the radial segment or the θ/φ arc,
+//! always from the edge's lower to its upper lattice end so that neighbours compute identical points) and add it to
+//! the Qef of its piece; solve each with params.tau. The vertex is the minimiser when it lies in the cell; else the
+//! Qef's mass point, clamped into the cell (Cartesian: the box, which always holds the mass point; spherical: clamp
+//! r, θ and φ — φ measured relative to the cell, across the seam — to the cell's intervals). Edges that degenerate
+//! to a point (φ-edges on the polar axis, θ/φ-edges at r = 0) have no crossing; a radial edge on the axis is counted
+//! once (both of its copies in a cell there belong to one piece).
 //! Finest edges are shared by 4 leaves: compute each crossing once (a BlockGrid keyed by the edge's lower end; on a
 //! spherical tree an edge whose lower end canonical() merges — the polar axis, the origin when r_min = 0 — must be
 //! keyed by its upper end, or all the θ-edges leaving a pole would share one crossing).
@@ -589,13 +658,14 @@ struct VertexParams {
 std::size_t place_vertices(Octree& tree, const VertexParams& params);
 
 //! Task (Cartesian octrees only): Ju et al.'s bottom-up simplification. A node whose 8 children are all leaves
-//! becomes a leaf when (1) its corner signs form a single sheet (inside corners edge-connected and outside
+//! becomes a leaf when (0) every child's own corner signs form a single sheet (so each child has at most one piece
+//! and no ambiguous face), (1) its corner signs form a single sheet (inside corners edge-connected and outside
 //! corners edge-connected), (2) the sign at the midpoint of each of its edges agrees with one of that edge's
 //! ends, at each face centre with one of the face's corners, at its centre with one of its corners, (3) the
-//! merged QEF's unclamped solution lies in the cell and √(Q/count) ≤ tolerance (a length). The new leaf gets the
-//! merged QEF's vertex (children's vertices stay in tree.vertices, unreferenced) and its `signs`. Repeats up the
-//! tree. The signs at the 27 points of the parent's 3×3×3 sub-lattice are the children's corner signs (call
-//! place_vertices first).
+//! merged QEF's unclamped solution lies in the cell and √(Q/count) ≤ tolerance (a length). The new leaf gets one
+//! vertex, the merged QEF's (edges: the parent's sign-changing cell edges, pieces 1; children's vertices stay in
+//! tree.vertices, unreferenced) and its `signs`. Repeats up the tree. The signs at the 27 points of the parent's
+//! 3×3×3 sub-lattice are the children's corner signs (call place_vertices first).
 //! \return the number of collapses.
 std::size_t simplify(Octree& tree, double tolerance, double tau);
 
@@ -610,15 +680,21 @@ struct PoleRing {
 };
 
 //! Task: polygons of the dual contour (after place_vertices, which records the leaves' signs and vertices).
-//! For every sign-changing MINIMAL edge (an edge of a leaf that no smaller
-//! leaf subdivides), take the leaves in the four quadrants around it (locate() at the edge midpoint ± half a
-//! finest cell), drop repeats (adaptive trees), and emit a triangle or a quad split into 2 triangles (along the
-//! shorter diagonal), counter-clockwise around the edge's axis when the edge's lower end is inside (reversed
-//! otherwise), so normals point outward. Emit each edge once. Spherical octrees: radial edges on the polar axis are
-//! surrounded by a whole ring of leaves, not four — they are returned in `poles` (when not null) instead;
-//! edges on the inner sphere r = r_min (no cells below) are skipped.
+//! For every sign-changing MINIMAL edge (an edge of a leaf that no smaller leaf subdivides), take the leaves in the
+//! four quadrants around it (locate() at the edge midpoint ± half a finest cell) and from each the vertex of the
+//! piece that crosses the edge: a leaf with one vertex gives it; a leaf with several (a finest leaf, as the edge's
+//! own leaf is then) gives the one whose `edges` holds the edge's number as its own cell edge. Drop repeated
+//! vertices (adaptive trees) and emit a triangle or a quad split into 2 triangles, counter-clockwise around the
+//! edge's axis when the edge's lower end is inside (reversed otherwise), so normals point outward. The split: along
+//! the diagonal whose two triangles both face the edge's outward direction (normal (b − a) × (c − a) · d > 0, d the
+//! edge's chord from its lower to its upper lattice end, negated when the lower end is outside) when only one of
+//! the two diagonals does so, else along the shorter diagonal (ties: the one from the polygon's first vertex); at
+//! level 1 of a spherical tree a quad whose 4 vertices an earlier quad joined takes the diagonal that one did not.
+//! Emit each edge once. Spherical octrees: radial edges on the polar axis are surrounded by a whole ring of leaves,
+//! not four — they are returned in `poles` (when not null) instead, each ring leaf giving the piece that crosses the
+//! axis edge; edges on the inner sphere r = r_min (no cells below) are skipped.
 //! \return a triangle soup whose positions are the referenced dual vertices (unreferenced ones are dropped).
-//! \throw TopologyError if a leaf around a sign-changing edge has no vertex.
+//! \throw TopologyError if a leaf around a sign-changing edge has no vertex, or several of which none crosses it.
 PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles = nullptr);
 
 // =====================================================================================================================
