@@ -824,7 +824,12 @@ std::optional<int> DemoProgram::parse(int argc, char** argv) {
 int DemoProgram::run(const std::function<int()>& body) {
     try {
         if (!figures_.empty()) check_figure_dir(figures_);
-        return body();
+        const int status = body();
+        if (status == 0 && memory_limit_reported()) {
+            std::cerr << program_ << ": a step ran out of memory (see above): exit status 1\n";
+            return 1;
+        }
+        return status;
     } catch (const NoDisplay& e) {
         std::cerr << program_ << ": " << e.what() << "\n";
         if (!no_display_hint.empty()) std::cerr << no_display_hint << "\n";

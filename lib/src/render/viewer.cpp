@@ -5,6 +5,7 @@
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdlib>
 #include <exception>
@@ -417,7 +418,14 @@ bool limit_demo_memory(std::size_t mb) {
     return ::setrlimit(RLIMIT_AS, &r) == 0;
 }
 
+namespace {
+std::atomic<bool> g_memory_limit_reported{false};
+}  // namespace
+
+bool memory_limit_reported() { return g_memory_limit_reported.load(); }
+
 std::string memory_limit_message(const std::string& where) {
+    g_memory_limit_reported = true;
     rlimit r{};
     std::string cap;
     if (::getrlimit(RLIMIT_AS, &r) == 0 && r.rlim_cur != RLIM_INFINITY)

@@ -353,7 +353,8 @@ public:
     std::string no_display_hint;
 
     //! Runs body() and turns what escapes it into one line on stderr and status 1: NoDisplay (plus
-    //! no_display_hint), std::bad_alloc (memory_limit_message("the demo")), other std::exception.
+    //! no_display_hint), std::bad_alloc (memory_limit_message("the demo")), other std::exception. A body that
+    //! returns 0 after a step ran out of memory (attempt() reported it and drew the rest) also ends with 1.
     //! With --figures, check_figure_dir(figures()) runs first.
     int run(const std::function<int()>& body);
 
