@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "common/process_stats.hpp"
 #include "common/ratio_main.hpp"
 #include "fuzz/hostile.hpp"
 #include "geolab/fixtures.hpp"
@@ -50,60 +51,9 @@ const geolab::PolygonSoup& polygon_soup() {
     return s;
 }
 
-long minor_faults() {
-    rusage u{};
-    getrusage(RUSAGE_SELF, &u);
-    return u.ru_minflt;
-}
-
-// A field of /proc/self/status in KiB ("VmRSS", "VmHWM"), or -1.
-long status_kib(const char* field) {
-    std::FILE* f = std::fopen("/proc/self/status", "r");
-    if (!f) return -1;
-    char line[256];
-    long kib = -1;
-    const std::size_t n = std::strlen(field);
-    while (std::fgets(line, sizeof line, f))
-        if (std::strncmp(line, field, n) == 0 && line[n] == ':') kib = std::atol(line + n + 1);
-    std::fclose(f);
-    return kib;
-}
-
-// What one call of `build` costs in memory, run once in a forked child that returns freed heap memory
-// (malloc_trim) and resets its high-water mark (/proc/self/clear_refs "5"): the peak resident memory it adds (MiB;
-// the soup is resident before and after) and its minor page faults (every page it touches is fresh there).
-// -1 where /proc does not allow it.
-struct FreshCost {
-    double peak_mib = -1;
-    double faults = -1;
-};
-template <class Build>
-FreshCost fresh_cost(Build build) {
-    int fds[2];
-    if (pipe(fds) != 0) return {};
-    const pid_t pid = fork();
-    if (pid == 0) {
-        FreshCost cost;
-        malloc_trim(0);  // give back what earlier runs freed, so that reusing it counts as new memory again
-        if (std::FILE* f = std::fopen("/proc/self/clear_refs", "w")) {
-            const bool reset = std::fputs("5", f) >= 0;
-            if (std::fclose(f) == 0 && reset) {
-                const long before = status_kib("VmRSS"), f0 = minor_faults();
-                build();
-                cost.faults = static_cast<double>(minor_faults() - f0);
-                const long peak = status_kib("VmHWM");
-                if (before >= 0 && peak >= 0) cost.peak_mib = static_cast<double>(peak - before) / 1024;
-            }
-        }
-        _exit(write(fds[1], &cost, sizeof cost) == sizeof cost ? 0 : 1);
-    }
-    close(fds[1]);
-    FreshCost cost;
-    if (read(fds[0], &cost, sizeof cost) != sizeof cost) cost = {};
-    close(fds[0]);
-    waitpid(pid, nullptr, 0);
-    return cost;
-}
+using geolab::bench::fresh_cost;
+using geolab::bench::FreshCost;
+using geolab::bench::minor_faults;
 
 // Times `build` (which returns something to keep), with its page faults per iteration, and its fresh cost. The
 // soup `build` reads must exist before (the lambdas capture it), or the child would count making it.

@@ -25,6 +25,7 @@
 #include <typeinfo>
 #include <vector>
 
+#include "common/process_stats.hpp"
 #include "common/ratio_main.hpp"
 #include "fixtures.hpp"  // tests/02_halfface/fixtures.hpp: the Kuhn tet grid
 #include "geolab/halfface.hpp"
@@ -45,53 +46,8 @@ const Mesh& grid_mesh() {
     return m;
 }
 
-long minor_faults() {
-    rusage u{};
-    getrusage(RUSAGE_SELF, &u);
-    return u.ru_minflt;
-}
-
-// A field of /proc/self/status in KiB ("VmRSS", "VmHWM"), or -1.
-long status_kib(const char* field) {
-    std::FILE* f = std::fopen("/proc/self/status", "r");
-    if (!f) return -1;
-    char line[256];
-    long kib = -1;
-    const std::size_t n = std::strlen(field);
-    while (std::fgets(line, sizeof line, f))
-        if (std::strncmp(line, field, n) == 0 && line[n] == ':') kib = std::atol(line + n + 1);
-    std::fclose(f);
-    return kib;
-}
-
-// The peak resident memory (MiB) that one call of `build` adds to the process, measured in a forked child (see
-// bench/01_halfedge): -1 where /proc does not allow it.
-template <class Build>
-double peak_mib(Build build) {
-    int fds[2];
-    if (pipe(fds) != 0) return -1;
-    const pid_t pid = fork();
-    if (pid == 0) {
-        double added = -1;
-        malloc_trim(0);
-        if (std::FILE* f = std::fopen("/proc/self/clear_refs", "w")) {
-            const bool reset = std::fputs("5", f) >= 0;
-            if (std::fclose(f) == 0 && reset) {
-                const long before = status_kib("VmRSS");
-                build();
-                const long peak = status_kib("VmHWM");
-                if (before >= 0 && peak >= 0) added = static_cast<double>(peak - before) / 1024;
-            }
-        }
-        _exit(write(fds[1], &added, sizeof added) == sizeof added ? 0 : 1);
-    }
-    close(fds[1]);
-    double added = -1;
-    if (read(fds[0], &added, sizeof added) != sizeof added) added = -1;
-    close(fds[0]);
-    waitpid(pid, nullptr, 0);
-    return added;
-}
+using geolab::bench::minor_faults;
+using geolab::bench::peak_mib;
 
 // ---- the 8 configurations ------------------------------------------------------------------------------------
 

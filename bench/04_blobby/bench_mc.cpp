@@ -21,6 +21,7 @@
 #include <benchmark/benchmark.h>
 #include <glm/geometric.hpp>
 
+#include "common/process_stats.hpp"
 #include "common/ratio_main.hpp"
 #include "geolab/blobby.hpp"
 
@@ -33,11 +34,7 @@
 namespace {
 using namespace geolab::blobby;
 
-long minor_faults() {
-    rusage u{};
-    getrusage(RUSAGE_SELF, &u);
-    return u.ru_minflt;
-}
+using geolab::bench::minor_faults;
 
 BlobScene twenty_blobs() {
     BlobScene s;

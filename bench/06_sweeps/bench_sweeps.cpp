@@ -20,6 +20,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "common/process_stats.hpp"
 #include "geolab/sweeps.hpp"
 
 namespace {
@@ -36,54 +37,8 @@ const Profile& profile() {
 }
 glm::dvec3 first_normal() { return glm::cross(path().tangents[0], glm::dvec3(0, 0, 1)); }
 
-long minor_faults() {
-    rusage u{};
-    getrusage(RUSAGE_SELF, &u);
-    return u.ru_minflt;
-}
-
-// A field of /proc/self/status in KiB ("VmRSS", "VmHWM"), or -1.
-long status_kib(const char* field) {
-    std::FILE* f = std::fopen("/proc/self/status", "r");
-    if (!f) return -1;
-    char line[256];
-    long kib = -1;
-    const std::size_t n = std::strlen(field);
-    while (std::fgets(line, sizeof line, f))
-        if (std::strncmp(line, field, n) == 0 && line[n] == ':') kib = std::atol(line + n + 1);
-    std::fclose(f);
-    return kib;
-}
-
-// The peak resident memory (MiB) one call of `run` adds to the process, measured in a forked child that gives back
-// freed heap memory (malloc_trim) and resets its high-water mark (/proc/self/clear_refs "5"). -1 where /proc does
-// not allow it.
-template <class Run>
-double peak_mib(Run run) {
-    int fds[2];
-    if (pipe(fds) != 0) return -1;
-    const pid_t pid = fork();
-    if (pid == 0) {
-        double added = -1;
-        malloc_trim(0);
-        if (std::FILE* f = std::fopen("/proc/self/clear_refs", "w")) {
-            const bool reset = std::fputs("5", f) >= 0;
-            if (std::fclose(f) == 0 && reset) {
-                const long before = status_kib("VmRSS");
-                run();
-                const long peak = status_kib("VmHWM");
-                if (before >= 0 && peak >= 0) added = static_cast<double>(peak - before) / 1024;
-            }
-        }
-        _exit(write(fds[1], &added, sizeof added) == sizeof added ? 0 : 1);
-    }
-    close(fds[1]);
-    double added = -1;
-    if (read(fds[0], &added, sizeof added) != sizeof added) added = -1;
-    close(fds[0]);
-    waitpid(pid, nullptr, 0);
-    return added;
-}
+using geolab::bench::minor_faults;
+using geolab::bench::peak_mib;
 
 // Times `run` with its page faults per iteration and (once per benchmark) the peak memory it adds.
 template <class Run>
