@@ -190,6 +190,45 @@ TEST_CASE("sites: an array bound in a declaration is a constant; a subscript aft
     CHECK(has(c, "1 -> 2"));
 }
 
+TEST_CASE("sites: a later declarator's array bound is a constant too; a call's argument subscript is not") {
+    const std::string text = block("int f(const int* a, int i) {\n"
+                                   "  int dx[4], dy[5];\n"
+                                   "  const int qb[2] = {1, 2}, qc[3] = {4, 5, 6};\n"
+                                   "  return g(a[1], a[6]) + dx[i] + dy[i] + qb[1] + qc[2];\n"
+                                   "}");
+    int bounds = 0, later = 0;
+    for (const auto& m : mutants_of(text)) {
+        // line 3: the bounds 4 and 5; line 4: qb's 2 (column 16) and qc's 3 (column 32), the rest initializers
+        const bool bound = m.line == 3 || (m.line == 4 && (m.col == 16 || m.col == 32));
+        if (bound) {
+            CHECK_MESSAGE(!m.schema_ok, m.key() << " is an array bound (first or later declarator): rebuilt alone");
+            ++bounds;
+            later += (m.line == 3 && m.original == "5") || (m.line == 4 && m.col == 32);
+        } else {
+            CHECK_MESSAGE(m.schema_ok, m.key() << " is an initializer, a subscript or an argument: in the schema");
+        }
+    }
+    CHECK(bounds >= 4);
+    CHECK(later >= 2);  // dy's 5 and qc's 3: the declarators after a comma
+}
+
+TEST_CASE("schema: a relaxed schema drops static_assert (its constexpr functions are inline there)") {
+    const std::string text = "namespace geolab::dc {\nnamespace {\n" +
+                             block("constexpr int sq(int x) { return x * x; }\n"
+                                   "static_assert(sq(3) == 9, \"squares\");\n"
+                                   "int f(int i) { return sq(i) + 1; }") +
+                             "}\n}\n";
+    const mut::SourceFile file("src/x.cpp", text, mut::Vocabulary::standard(), 0);
+    std::set<int> all;
+    for (const auto& m : file.mutants()) all.insert(m.id);
+    const std::string relaxed = file.schema(all, nullptr, true).substr(mut::schema_preamble().size());
+    CHECK(relaxed.find("inline int sq(") != std::string::npos);
+    CHECK(relaxed.find("GEOLAB_MUTANT_RELAXED_STATIC_ASSERT(") != std::string::npos);
+    CHECK(relaxed.find("static_assert(sq") == std::string::npos);
+    const std::string strict = file.schema({}, nullptr, false);
+    CHECK(strict.find("static_assert(sq(3) == 9") != std::string::npos);
+}
+
 TEST_CASE("schema: a relaxed schema computes constexpr tables at start-up and digests them") {
     const std::string text = "namespace geolab::dc {\nnamespace {\n" +
                              block("struct T { int v[4] = {}; };\n"

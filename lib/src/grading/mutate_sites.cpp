@@ -487,6 +487,10 @@ SourceFile::SourceFile(std::string file, std::string text, const Vocabulary& voc
              t == "alignas" || t == "requires" || t == "typeid") &&
             txt(i + 1) == "(" && info[i + 1].match != std::string::npos) {
             for (std::size_t j = i + 1; j <= info[i + 1].match; ++j) info[j].unevaluated = true;
+            // A relaxed schema's constexpr functions are inline, so a static_assert that calls one cannot be
+            // evaluated: it goes (a compile-time self-check of the reference; a mutant that breaks it would not
+            // compile, and in the schema it is graded by the tests instead).
+            if (t == "static_assert") relax_tokens_.push_back({i, "GEOLAB_MUTANT_RELAXED_STATIC_ASSERT"});
         } else if (t == "case") {
             for (std::size_t j = i + 1; j < n && txt(j) != ":"; ++j) info[j].unevaluated = true;
         } else if (t == "enum") {
@@ -571,12 +575,39 @@ SourceFile::SourceFile(std::string file, std::string text, const Vocabulary& voc
                    before == "const" || before == "static" || before == "constexpr" || before == "inline" ||
                    before == "extern" || before == "volatile" || before == "mutable" || before == "thread_local";
         };
+        // "int dx[4], dy[4]" and "constexpr int a[2] = {1, 2}, b[2] = ...": a later declarator of a declaration,
+        // after a ',' at the statement's own depth, in a statement that starts (after specifiers) with a type
+        auto later_declarator = [&](std::size_t comma) {
+            static const std::set<std::string> specifiers{"const",  "static",   "constexpr",    "inline",   "extern",
+                                                          "volatile", "mutable", "thread_local", "constinit"};
+            std::size_t t = comma;
+            while (t > 0) {
+                const std::size_t k = t - 1;
+                const std::string& u = txt(k);
+                const bool closer = u == ")" || u == "]" || (u == "}" && txt(k + 1) == ",") ||
+                                    (u == ">" && info[k].template_close);
+                if (closer && info[k].match != std::string::npos) {
+                    t = info[k].match;
+                    continue;
+                }
+                if (u == ";" || u == "{" || u == "}") break;
+                if (u == "(" || u == "[" || u == "<") return false;  // a call's arguments, a subscript, a comparison
+                t = k;
+            }
+            while (t < comma && specifiers.count(txt(t))) ++t;
+            if (t + 1 >= comma) return false;
+            if (type_words().count(txt(t))) return true;
+            return kind(t) == TokenKind::identifier && !keywords().count(txt(t)) &&
+                   (kind(t + 1) == TokenKind::identifier || txt(t + 1) == "::" ||
+                    (txt(t + 1) == "<" && info[t + 1].template_open));
+        };
         for (std::size_t i = 2; i < n; ++i) {
             if (txt(i) != "[" || info[i].match == std::string::npos) continue;
             const bool after_name = kind(i - 1) == TokenKind::identifier && !keywords().count(txt(i - 1)) &&
                                     (type_words().count(txt(i - 2)) || info[i - 2].template_close ||
                                      ((txt(i - 2) == "*" || txt(i - 2) == "&") && pointer_declarator(i - 2)) ||
-                                     (kind(i - 2) == TokenKind::identifier && !keywords().count(txt(i - 2))));
+                                     (kind(i - 2) == TokenKind::identifier && !keywords().count(txt(i - 2))) ||
+                                     (txt(i - 2) == "," && later_declarator(i - 2)));
             const bool next_dim = txt(i - 1) == "]" && info[i - 1].match != std::string::npos && declarator[info[i - 1].match];
             if (!after_name && !next_dim) continue;
             declarator[i] = 1;
@@ -1080,6 +1111,7 @@ template <long K, class T> std::remove_cvref_t<T> negate_if(T&& x) {
     return std::forward<T>(x);
 }
 }  // namespace geolab_mutant_rt
+#define GEOLAB_MUTANT_RELAXED_STATIC_ASSERT(...) static_assert(true)
 )PRE";
     return text;
 }
