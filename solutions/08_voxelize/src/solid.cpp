@@ -96,8 +96,8 @@ struct Triangle {
 
 // The layers [k0, k1) in slabs of about 16 layers that start at word boundaries (each word has one writer, so
 // threads need no atomics, and a slab's words stay in the cache while its triangles flip them), with the triangles
-// of each slab: those whose flips can land there (the layers floor(zmin) − 1 .. floor(zmax) + 1); a triangle below
-// all slabs goes to the first (along z it flips whole columns), one above all slabs nowhere.
+// of each slab: those whose columns or flips can be there (the layers floor(zmin − ½) .. floor(zmax − ½) + 1); a
+// triangle below all slabs goes to the first (along z it flips whole columns), one above all slabs nowhere.
 struct Slabs {
     std::vector<std::int64_t> bounds;              // slab s is the layers [bounds[s], bounds[s + 1])
     std::vector<std::vector<Triangle>> triangles;  // slab s's triangles
@@ -113,7 +113,7 @@ Slabs make_slabs(const PolygonSoup& mesh, const Dims& dims, std::int64_t k0, std
         for (std::size_t v = 1; v + 1 < vs.size(); ++v) {
             const Triangle t{vs[0], vs[v], vs[v + 1]};
             const double za = mesh.positions[t.a].z, zb = mesh.positions[t.b].z, zc = mesh.positions[t.c].z;
-            const double lo = std::floor(std::min({za, zb, zc})) - 1, hi = std::floor(std::max({za, zb, zc})) + 1;
+            const double lo = std::floor(std::min({za, zb, zc}) - 0.5), hi = std::floor(std::max({za, zb, zc}) - 0.5) + 1;
             // the slabs s with b[s + 1] > lo (from the one holding lo on, or the first) and b[s] <= hi
             const auto above_lo = std::size_t(std::upper_bound(b.begin(), b.end(), lo) - b.begin());
             std::size_t s = above_lo == 0 ? 0 : above_lo - 1;
@@ -185,16 +185,21 @@ void flip_columns(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c,
         }
 }
 
-// The parity along x or y of slab s (steps 1 and 2) in a grid whose first layer is k0: the slab's own rows only.
-void slab_parity(const PolygonSoup& mesh, const Slabs& slabs, std::size_t s, int axis, const Dims& dims,
-                 std::int64_t k0, std::vector<std::uint64_t>& words) {
-    const std::int64_t s0 = slabs.bounds[s], s1 = slabs.bounds[s + 1];
+// Step 1 for slab s along each axis d with words[d] set, into grids whose first layer is k0.
+void slab_flips(const PolygonSoup& mesh, const Slabs& slabs, std::size_t s, const Dims& dims, std::int64_t k0,
+                std::vector<std::uint64_t>* const words[3]) {
     for (const Triangle& t : slabs.triangles[s]) {
         const glm::dvec3 &a = mesh.positions[t.a], &b = mesh.positions[t.b], &c = mesh.positions[t.c];
-        flip_columns(a, b, c, normal_signs(a, b, c), axis, dims, k0, s0, s1, words);
+        const glm::ivec3 ns = normal_signs(a, b, c);
+        for (int d = 0; d < 3; ++d)
+            if (words[d]) flip_columns(a, b, c, ns, d, dims, k0, slabs.bounds[s], slabs.bounds[s + 1], *words[d]);
     }
+}
+
+// Step 2 along x (axis 0) or y (axis 1) for the layers [l0, l1) of a grid: a prefix XOR along each row or column.
+void prefix_rows(std::vector<std::uint64_t>& words, const Dims& dims, int axis, std::int64_t l0, std::int64_t l1) {
     const std::uint64_t nx = std::uint64_t(dims.nx);
-    for (std::int64_t k = s0 - k0; k < s1 - k0; ++k)
+    for (std::int64_t k = l0; k < l1; ++k)
         for (std::int64_t j = 0; j < dims.ny; ++j) {
             const std::uint64_t row = nx * (std::uint64_t(j) + std::uint64_t(dims.ny) * std::uint64_t(k));
             if (axis == 0) prefix_xor_run(words, row, nx);
@@ -206,20 +211,16 @@ void slab_parity(const PolygonSoup& mesh, const Slabs& slabs, std::size_t s, int
 BitGrid parity(const PolygonSoup& mesh, const Slabs& slabs, const Dims& dims, int axis, std::int64_t k0,
                std::int64_t k1, int threads) {
     BitGrid grid(Dims{dims.nx, dims.ny, k1 - k0});
-    if (axis != 2) {
-        for_each_slab(slabs, threads, [&](std::size_t s) { slab_parity(mesh, slabs, s, axis, dims, k0, grid.words); });
-        return grid;
-    }
-    // Along z the prefix crosses the slabs: the flips slab by slab, then the prefix layer after layer (each layer's
-    // words once: cheap).
+    std::vector<std::uint64_t>* words[3] = {};
+    words[axis] = &grid.words;
     for_each_slab(slabs, threads, [&](std::size_t s) {
-        for (const Triangle& t : slabs.triangles[s]) {
-            const glm::dvec3 &a = mesh.positions[t.a], &b = mesh.positions[t.b], &c = mesh.positions[t.c];
-            flip_columns(a, b, c, normal_signs(a, b, c), 2, dims, k0, slabs.bounds[s], slabs.bounds[s + 1], grid.words);
-        }
+        slab_flips(mesh, slabs, s, dims, k0, words);
+        if (axis != 2) prefix_rows(grid.words, dims, axis, slabs.bounds[s] - k0, slabs.bounds[s + 1] - k0);
     });
+    // Along z the prefix crosses the slabs: layer after layer, once all flips are in (each layer's words once).
     const std::uint64_t nxy = std::uint64_t(dims.nx) * std::uint64_t(dims.ny);
-    for (std::int64_t k = 1; k < k1 - k0; ++k) xor_run(grid.words, nxy * std::uint64_t(k - 1), nxy * std::uint64_t(k), nxy);
+    if (axis == 2)
+        for (std::int64_t k = 1; k < k1 - k0; ++k) xor_run(grid.words, nxy * std::uint64_t(k - 1), nxy * std::uint64_t(k), nxy);
     return grid;
 }
 
@@ -354,8 +355,10 @@ SolidResult voxelize_solid(const PolygonSoup& mesh, const Dims& dims, int thread
         for_each_slab(slabs, threads, [&](std::size_t s) {
             const std::int64_t s0 = slabs.bounds[s], s1 = slabs.bounds[s + 1];
             BitGrid x(Dims{dims.nx, dims.ny, s1 - s0}), y(x.dims);
-            slab_parity(mesh, slabs, s, 0, dims, s0, x.words);
-            slab_parity(mesh, slabs, s, 1, dims, s0, y.words);
+            std::vector<std::uint64_t>* const words[3] = {&x.words, &y.words, nullptr};
+            slab_flips(mesh, slabs, s, dims, s0, words);
+            prefix_rows(x.words, dims, 0, 0, s1 - s0);
+            prefix_rows(y.words, dims, 1, 0, s1 - s0);
             const std::size_t first = std::size_t(std::uint64_t(dims.nx) * std::uint64_t(dims.ny) * std::uint64_t(s0) / 64);
             for (std::size_t w = 0; w < x.words.size(); ++w) {
                 std::uint64_t& z = r.grid.words[first + w];
