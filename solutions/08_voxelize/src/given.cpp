@@ -194,8 +194,11 @@ PolygonSoup triangles_between(const PolygonSoup& mesh, double z0, double z1) {
 FileVoxels voxelize_to_file(const PolygonSoup& mesh, const Dims& dims, bool solid, const std::filesystem::path& path,
                             int threads, std::int64_t slab_layers,
                             const std::function<void(std::int64_t, std::int64_t)>& progress) {
-    const BitGrid check(dims);  // checks the sizes (an empty grid: no memory)
+    if (dims.nx < 0 || dims.ny < 0 || dims.nz < 0) throw std::invalid_argument("voxelize_to_file: a negative size");
+    const BitGrid layer(Dims{dims.nx, dims.ny, 1});  // checks nx·ny (one layer, not the whole grid: no memory)
     const std::uint64_t layer_bits = std::uint64_t(dims.nx) * std::uint64_t(dims.ny);
+    if (layer_bits != 0 && std::uint64_t(dims.nz) > (std::uint64_t(1) << 62) / layer_bits)
+        throw std::invalid_argument("voxelize_to_file: more than 2^62 voxels");
     if (layer_bits % 64 != 0)
         throw std::invalid_argument("voxelize_to_file: nx * ny = " + std::to_string(layer_bits) +
                                     " is not a multiple of 64 (each layer must be whole words: res a multiple of 8)");
