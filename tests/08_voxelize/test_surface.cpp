@@ -22,7 +22,7 @@ BitGrid shell(Dims d, std::int64_t a, std::int64_t b) {
 }  // namespace
 
 TEST_SUITE("Task 3: surface voxelization") {
-    TEST_CASE("surface: a cube on voxel boundaries gets no extra layer" * geolab::points(4) *
+    TEST_CASE("surface: a cube on voxel boundaries gets no extra layer" * geolab::points(3) *
               geolab::hint("a face in the plane x = m belongs to the layer behind its normal only (Task 2's rule)")) {
         const Dims d{10, 10, 10};
         check_grid(voxelize_surface(box_mesh({2, 2, 2}, {6, 6, 6}), d, 1), shell(d, 2, 5), "outward cube [2, 6]³");
@@ -71,7 +71,7 @@ TEST_SUITE("Task 3: surface voxelization") {
                            C{icosphere({2, 2, 2}, 7, 1), {8, 8, 8}, "a sphere larger than the grid"}})
             check_grid(voxelize_surface(c.s, c.d, 1), expected_surface(c.s, c.d), c.what);
     }
-    TEST_CASE("surface: 2; 3 and 8 threads give exactly the 1-thread grid (bunny00; 96³)" * geolab::points(3) *
+    TEST_CASE("surface: 2; 3 and 8 threads give exactly the 1-thread grid (bunny00; 96³)" * geolab::points(2) *
               geolab::time_limit(60) *
               geolab::hint("threads that OR bits into the same 64-bit word race: use std::atomic_ref's fetch_or, or give "
                            "each thread whole words")) {
@@ -87,6 +87,53 @@ TEST_SUITE("Task 3: surface voxelization") {
         const BitGrid want = grid_of(e, [](std::int64_t, std::int64_t, std::int64_t k) { return k == 1; });
         for (int rep = 0; rep < 12; ++rep)
             for (int t : {2, 8}) check_grid(voxelize_surface(layer, e, t), want, "dust layer, " + std::to_string(t) + " threads");
+    }
+    TEST_CASE("surface: triangles only an edge cross-product axis separates from a voxel of their box" *
+              geolab::points(2) *
+              geolab::hint("Task 2's nine edge axes matter here too: a voxel of the bounding box that neither the box's "
+                           "normals nor the triangle's normal separate may still be missed")) {
+        // 64 such triangles, each near its own voxel (6·a, 6·b, 6·c) of a 24³ grid, in one soup
+        const auto tris = edge_axis_triangles(64, 13);
+        REQUIRE_MESSAGE(tris.size() == 64, "test self-check: only " << tris.size() << " edge-axis triangles found");
+        PolygonSoup soup;
+        for (std::size_t n = 0; n < tris.size(); ++n) {
+            const glm::dvec3 offset(6.0 * double(n % 4) + 2, 6.0 * double(n / 4 % 4) + 2, 6.0 * double(n / 16) + 2);
+            const auto b = std::uint32_t(soup.positions.size());
+            for (const glm::dvec3& p : tris[n]) soup.positions.push_back(p + offset);
+            soup.add_face({b, b + 1, b + 2});
+        }
+        const Dims d{24, 24, 24};
+        const BitGrid want = expected_surface(soup, d);
+        for (std::size_t n = 0; n < tris.size(); ++n)
+            REQUIRE_MESSAGE(!want.get(std::int64_t(6 * (n % 4) + 2), std::int64_t(6 * (n / 4 % 4) + 2), std::int64_t(6 * (n / 16) + 2)),
+                            "test self-check: triangle " << n << " meets its voxel");
+        check_grid(voxelize_surface(soup, d, 1), want, "64 edge-axis triangles " + str(tris[0][0]) + " ... in 24³");
+    }
+    TEST_CASE("surface: the layers k0 to k1 are that slab of the whole grid" * geolab::points(2) *
+              geolab::hint("voxel (i, j, k) of the whole grid is voxel (i, j, k − k0) of the layers; a face on the "
+                           "slab's boundary plane follows Task 2's rule like any other")) {
+        struct C {
+            PolygonSoup s;
+            Dims d;
+            std::string what;
+        };
+        for (const C& c : {C{box_mesh({2, 2, 2}, {6, 6, 6}), {10, 10, 10}, "outward cube [2, 6]³"},
+                           C{box_mesh({2, 2, 2}, {6, 6, 6}, true), {10, 10, 10}, "inward cube [2, 6]³"},
+                           C{icosphere({6.3, 5.7, 6.1}, 4.6, 2), {13, 12, 13}, "icosphere r 4.6"},
+                           C{octahedron({5, 5, 5}, 4), {11, 9, 10}, "octahedron, vertices on voxel corners"}}) {
+            const BitGrid whole = expected_surface(c.s, c.d);
+            const std::int64_t n = c.d.nz;
+            for (auto [k0, k1] : {std::pair<std::int64_t, std::int64_t>{0, n}, {0, 2}, {2, 6}, {6, n}, {1, 7}, {n - 1, n}, {3, 3}}) {
+                const std::string what = c.what + ", layers [" + std::to_string(k0) + ", " + std::to_string(k1) + ")";
+                check_grid(voxelize_surface_layers(c.s, c.d, k0, k1, 1), layers_of(whole, k0, k1), what);
+            }
+            check_grid(voxelize_surface_layers(c.s, c.d, 1, n - 1, 3), layers_of(whole, 1, n - 1), c.what + ", 3 threads");
+        }
+        const PolygonSoup cube = box_mesh({1, 1, 1}, {3, 3, 3});
+        for (auto [k0, k1] : {std::pair<std::int64_t, std::int64_t>{-1, 2}, {3, 2}, {0, 5}}) {
+            INFO("voxelize_surface_layers of a 4³ grid, layers [" << k0 << ", " << k1 << "): expected std::invalid_argument");
+            CHECK_THROWS_AS(voxelize_surface_layers(cube, {4, 4, 4}, k0, k1, 1), std::invalid_argument);
+        }
     }
     TEST_CASE("surface: bad arguments are errors" * geolab::points(1) *
               geolab::hint("threads < 1 and invalid soups (check_soup) throw std::invalid_argument")) {
