@@ -34,7 +34,7 @@ void add_voxelize(CLI::App& app, int& status);
 namespace {
 struct VoxelizeOpts {
     std::string mesh, method = "cpu", out;
-    std::int64_t res = 128, slab_layers = 64;
+    std::int64_t res = 128, slab_layers = 32;
     bool solid = false, json = false, out_of_core = false;
     int threads = 1;
 };

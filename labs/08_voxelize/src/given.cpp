@@ -174,20 +174,31 @@ BitGrid read_raw(const std::filesystem::path& path) {
 // ---- the file-backed mode ----------------------------------------------------------------------------------------
 namespace {
 
-// The fan triangles of `mesh` whose z-range meets [z0, z1], as a soup of their own (the same vertices, in the same
-// order, so each triangle is decided exactly as in the whole mesh).
-PolygonSoup triangles_between(const PolygonSoup& mesh, double z0, double z1) {
-    PolygonSoup out;
-    out.positions = mesh.positions;
-    for (std::size_t f = 0; f < mesh.n_faces(); ++f) {
-        const auto vs = mesh.face(f);
-        for (std::size_t t = 1; t + 1 < vs.size(); ++t) {
-            const double za = mesh.positions[vs[0]].z, zb = mesh.positions[vs[t]].z, zc = mesh.positions[vs[t + 1]].z;
-            if (std::max({za, zb, zc}) >= z0 && std::min({za, zb, zc}) <= z1) out.add_face({vs[0], vs[t], vs[t + 1]});
+// The fan triangles of a mesh with their z-ranges, to pick each slab's quickly.
+struct FanTriangles {
+    std::vector<std::array<std::uint32_t, 3>> vertices;
+    std::vector<double> zmin, zmax;
+    explicit FanTriangles(const PolygonSoup& mesh) {
+        for (std::size_t f = 0; f < mesh.n_faces(); ++f) {
+            const auto vs = mesh.face(f);
+            for (std::size_t t = 1; t + 1 < vs.size(); ++t) {
+                const double za = mesh.positions[vs[0]].z, zb = mesh.positions[vs[t]].z, zc = mesh.positions[vs[t + 1]].z;
+                vertices.push_back({vs[0], vs[t], vs[t + 1]});
+                zmin.push_back(std::min({za, zb, zc}));
+                zmax.push_back(std::max({za, zb, zc}));
+            }
         }
     }
-    return out;
-}
+    // Those whose z-range meets [z0, z1], as a soup of their own (the same vertices, in the same order, so each
+    // triangle is decided exactly as in the whole mesh).
+    PolygonSoup between(const PolygonSoup& mesh, double z0, double z1) const {
+        PolygonSoup out;
+        out.positions = mesh.positions;
+        for (std::size_t t = 0; t < vertices.size(); ++t)
+            if (zmax[t] >= z0 && zmin[t] <= z1) out.add_face({vertices[t][0], vertices[t][1], vertices[t][2]});
+        return out;
+    }
+};
 
 }  // namespace
 
@@ -215,12 +226,13 @@ FileVoxels voxelize_to_file(const PolygonSoup& mesh, const Dims& dims, bool soli
     }
     const std::size_t layer_words = layer_bits / 64;
     const std::int64_t total = (dims.nz + slab_layers - 1) / slab_layers;
+    const FanTriangles triangles(mesh);
     RawWriter out(path);
     std::vector<std::uint64_t> carry(layer_words, 0);  // solid: the z parity of the layer below the slab
     for (std::int64_t k0 = 0; k0 < dims.nz; k0 += slab_layers) {
         const std::int64_t k1 = std::min(dims.nz, k0 + slab_layers);
         // the triangles that reach the slab's voxels, their rays or their columns
-        const PolygonSoup near = triangles_between(mesh, double(k0), double(k1));
+        const PolygonSoup near = triangles.between(mesh, double(k0), double(k1));
         BitGrid slab;
         if (!solid) {
             slab = voxelize_surface_layers(near, dims, k0, k1, threads);
@@ -233,10 +245,10 @@ FileVoxels voxelize_to_file(const PolygonSoup& mesh, const Dims& dims, bool soli
             // The first slab has no layer below: every triangle under it counts, and its parity is exact as it is.
             BitGrid z;
             if (k0 == 0) {
-                z = parity_fill_layers(triangles_between(mesh, -std::numeric_limits<double>::infinity(), double(k1)),
+                z = parity_fill_layers(triangles.between(mesh, -std::numeric_limits<double>::infinity(), double(k1)),
                                        dims, 2, 0, k1, threads);
             } else {
-                const BitGrid below = parity_fill_layers(triangles_between(mesh, double(k0 - 1), double(k1)), dims, 2,
+                const BitGrid below = parity_fill_layers(triangles.between(mesh, double(k0 - 1), double(k1)), dims, 2,
                                                          k0 - 1, k1, threads);
                 z = BitGrid(Dims{dims.nx, dims.ny, k1 - k0});
                 for (std::int64_t t = 0; t < k1 - k0; ++t)
@@ -249,7 +261,7 @@ FileVoxels voxelize_to_file(const PolygonSoup& mesh, const Dims& dims, bool soli
             for (std::size_t w = 0; w < slab.words.size(); ++w) {
                 const std::uint64_t all = x.words[w] & y.words[w] & z.words[w], any = x.words[w] | y.words[w] | z.words[w];
                 slab.words[w] = all;
-                r.axis_disagreements += std::uint64_t(std::popcount(any & ~all));
+                if (any != all) r.axis_disagreements += std::uint64_t(std::popcount(any & ~all));
             }
         }
         out.write(slab.words.data(), slab.words.size() * 8);

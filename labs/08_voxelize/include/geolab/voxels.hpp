@@ -282,7 +282,7 @@ struct FileVoxels {
 //! slab_layers < 1, threads < 1, the soup is invalid, or `solid` and the mesh is not closed (the outside flood fill
 //! needs the whole grid); geolab::IoError when the file cannot be written.
 FileVoxels voxelize_to_file(const PolygonSoup& mesh, const Dims& dims, bool solid, const std::filesystem::path& path,
-                            int threads = 1, std::int64_t slab_layers = 64,
+                            int threads = 1, std::int64_t slab_layers = 32,
                             const std::function<void(std::int64_t, std::int64_t)>& progress = {});
 
 // ==== The grading boundary (for the grader; nothing to do for you) ===========================================
