@@ -166,17 +166,21 @@ inline PolygonSoup icosphere(glm::dvec3 c, double r, int levels) {
 // "Dust": one tiny triangle inside each voxel (i, j, k0) of an nx × ny layer, in row order, so that threads taking
 // triangles in turn write neighbouring bits of the same 64-bit words at the same time (a race shows). Each triangle
 // covers its column's centre (i + ½, j + ½), so along z it flips that column once (z within 0.05 of the given height).
-inline PolygonSoup dust(std::int64_t nx, std::int64_t ny, double z) {
+// With `shuffle`, the triangles come in a random order (a fixed seed): whatever block of them a thread takes, the
+// bits it sets lie in every word of the layer, written at any time of the run by any thread.
+inline PolygonSoup dust(std::int64_t nx, std::int64_t ny, double z, bool shuffle = false) {
+    std::vector<std::int64_t> order(std::size_t(nx * ny));
+    for (std::size_t n = 0; n < order.size(); ++n) order[n] = std::int64_t(n);
+    if (shuffle) std::shuffle(order.begin(), order.end(), std::mt19937_64(2024));
     PolygonSoup s;
-    for (std::int64_t j = 0; j < ny; ++j)
-        for (std::int64_t i = 0; i < nx; ++i) {
-            const auto b = std::uint32_t(s.positions.size());
-            const double x = double(i), y = double(j);
-            s.positions.push_back({x + 0.3, y + 0.3, z});
-            s.positions.push_back({x + 0.8, y + 0.4, z + 0.05});
-            s.positions.push_back({x + 0.4, y + 0.8, z - 0.05});
-            s.add_face({b, b + 1, b + 2});
-        }
+    for (const std::int64_t n : order) {
+        const auto b = std::uint32_t(s.positions.size());
+        const double x = double(n % nx), y = double(n / nx);
+        s.positions.push_back({x + 0.3, y + 0.3, z});
+        s.positions.push_back({x + 0.8, y + 0.4, z + 0.05});
+        s.positions.push_back({x + 0.4, y + 0.8, z - 0.05});
+        s.add_face({b, b + 1, b + 2});
+    }
     return s;
 }
 

@@ -248,11 +248,18 @@ TEST_SUITE("Task 4: solid voxelization") {
             CHECK(count_bits(one) > 100000);
             for (int t : {2, 3, 8}) check_grid(parity_fill(m, {96, 96, 96}, axis, t), one, std::to_string(t) + " threads, axis " + std::to_string(axis));
         }
-        // one flip per column of a 512 x 512 grid, neighbouring columns in turn on different threads
-        const PolygonSoup layer = dust(512, 512, 1.2);
-        const Dims e{512, 512, 3};
-        const BitGrid want = grid_of(e, [](std::int64_t, std::int64_t, std::int64_t k) { return k >= 1; });
-        for (int rep = 0; rep < 12; ++rep)
-            for (int t : {2, 8}) check_grid(parity_fill(layer, e, 2, t), want, "dust layer, " + std::to_string(t) + " threads");
+        // one flip per column (a triangle under each column's centre):
+        // a 512 x 512 layer in row order: threads that take the triangles in turn write neighbouring bits at once;
+        // a 128 x 128 layer shuffled, many times: whatever block of triangles a thread takes, its bits lie in every
+        // word, written at any moment by any thread
+        for (const std::int64_t n : {512, 128}) {
+            const bool shuffle = n == 128;
+            const PolygonSoup layer = dust(n, n, 1.2, shuffle);
+            const Dims e{n, n, 3};
+            const BitGrid want = grid_of(e, [](std::int64_t, std::int64_t, std::int64_t k) { return k >= 1; });
+            for (int rep = 0; rep < (shuffle ? 100 : 12); ++rep)
+                for (int t : {2, 8})
+                    check_grid(parity_fill(layer, e, 2, t), want, (shuffle ? "shuffled dust layer " : "dust layer ") + str(e) + ", " + std::to_string(t) + " threads");
+        }
     }
 }

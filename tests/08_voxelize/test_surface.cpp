@@ -81,12 +81,19 @@ TEST_SUITE("Task 3: surface voxelization") {
         CHECK(count_bits(one) > 20000);
         for (int rep = 0; rep < 3; ++rep)
             for (int t : {2, 3, 8}) check_grid(voxelize_surface(m, d, t), one, std::to_string(t) + " threads");
-        // every voxel of a 512 x 512 layer set by its own triangle: threads write the same words at the same time
-        const PolygonSoup layer = dust(512, 512, 1.2);
-        const Dims e{512, 512, 3};
-        const BitGrid want = grid_of(e, [](std::int64_t, std::int64_t, std::int64_t k) { return k == 1; });
-        for (int rep = 0; rep < 12; ++rep)
-            for (int t : {2, 8}) check_grid(voxelize_surface(layer, e, t), want, "dust layer, " + std::to_string(t) + " threads");
+        // every voxel of a layer set by its own triangle:
+        // a 512 x 512 layer in row order: threads that take the triangles in turn write neighbouring bits at once;
+        // a 128 x 128 layer shuffled, many times: whatever block of triangles a thread takes, its bits lie in every
+        // word, written at any moment by any thread
+        for (const std::int64_t n : {512, 128}) {
+            const bool shuffle = n == 128;
+            const PolygonSoup layer = dust(n, n, 1.2, shuffle);
+            const Dims e{n, n, 3};
+            const BitGrid want = grid_of(e, [](std::int64_t, std::int64_t, std::int64_t k) { return k == 1; });
+            for (int rep = 0; rep < (shuffle ? 100 : 12); ++rep)
+                for (int t : {2, 8})
+                    check_grid(voxelize_surface(layer, e, t), want, (shuffle ? "shuffled dust layer " : "dust layer ") + str(e) + ", " + std::to_string(t) + " threads");
+        }
     }
     TEST_CASE("surface: triangles only an edge cross-product axis separates from a voxel of their box" *
               geolab::points(2) *
