@@ -58,7 +58,7 @@ TEST_SUITE("Task 3: surface voxelization") {
         const PolygonSoup far = box_mesh({1.25, 1.25, 5.5}, {4.75, 4.75, 9});
         check_grid(voxelize_surface(far, d, 1), expected_surface(far, d), "a box through the far face z = 6");
     }
-    TEST_CASE("surface: spheres and octahedra agree with the rule voxel by voxel" * geolab::points(3) *
+    TEST_CASE("surface: spheres and octahedra agree with the rule voxel by voxel" * geolab::points(2) *
               geolab::hint("every voxel of each triangle's bounding box, tested with triangle_overlaps_voxel")) {
         struct C {
             PolygonSoup s;
@@ -141,6 +141,23 @@ TEST_SUITE("Task 3: surface voxelization") {
             INFO("voxelize_surface_layers of a 4³ grid, layers [" << k0 << ", " << k1 << "): expected std::invalid_argument");
             CHECK_THROWS_AS(voxelize_surface_layers(cube, {4, 4, 4}, k0, k1, 1), std::invalid_argument);
         }
+    }
+    TEST_CASE("surface: tall grids and long rows (faces on many layer planes; 1; 2 and 4 threads)" * geolab::points(2) *
+              geolab::hint("however the work is split (by triangles, rows or layers), every layer gets every voxel "
+                           "of every triangle that belongs to it, and rows longer than a word are whole")) {
+        struct C {
+            PolygonSoup s;
+            Dims d;
+            std::string what;
+        };
+        for (const C& c : {C{box_mesh({1, 1, 8}, {7, 7, 16}), {8, 8, 64}, "box [1,7]x[1,7]x[8,16] in 8 x 8 x 64"},
+                           C{box_mesh({1, 1, 16}, {7, 7, 48}, true), {8, 8, 64}, "inward box [1,7]x[1,7]x[16,48]"},
+                           C{box_mesh({2, 2, 24}, {6, 6, 40}), {8, 8, 64}, "box [2,6]x[2,6]x[24,40]"},
+                           C{box_mesh({0, 0, 0}, {8, 8, 64}), {8, 8, 64}, "the box filling 8 x 8 x 64"},
+                           C{octahedron({4, 4, 32}, 4), {8, 8, 64}, "octahedron centre (4, 4, 32) r 4"},
+                           C{icosphere({4.1, 3.9, 30.3}, 3.6, 2), {8, 8, 64}, "icosphere r 3.6 across layers 26..34"},
+                           C{box_mesh({1.5, 1, 1}, {128.5, 4, 5}), {130, 5, 6}, "box [1.5,128.5]x[1,4]x[1,5] in 130 x 5 x 6"}})
+            for (int t : {1, 2, 4}) check_grid(voxelize_surface(c.s, c.d, t), expected_surface(c.s, c.d), c.what + ", " + std::to_string(t) + " thread(s)");
     }
     TEST_CASE("surface: bad arguments are errors" * geolab::points(1) *
               geolab::hint("threads < 1 and invalid soups (check_soup) throw std::invalid_argument")) {
