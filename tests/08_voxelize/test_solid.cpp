@@ -99,13 +99,15 @@ TEST_SUITE("Task 4: solid voxelization") {
             BitGrid want;
             std::string what;
         };
-        const Dims tall{8, 8, 64}, wide{130, 5, 6};
+        const Dims tall{8, 8, 64}, wide{130, 5, 6}, odd{65, 2, 5}, odd2{63, 3, 4};
         for (const C& c : {C{box_mesh({1, 1, 8}, {7, 7, 16}), box_solid(tall, {1, 1, 8}, {7, 7, 16}), "box [1,7]x[1,7]x[8,16] in 8 x 8 x 64"},
                            C{box_mesh({2, 1.5, 16.5}, {6.5, 7, 48}), box_solid(tall, {2, 1.5, 16.5}, {6.5, 7, 48}), "box [2,6.5]x[1.5,7]x[16.5,48]"},
                            C{box_mesh({0, 0, -5}, {8, 8, 70}), box_solid(tall, {0, 0, -5}, {8, 8, 70}), "a box around the whole grid"},
                            C{octahedron({3.5, 4.5, 31.5}, 4), octahedron_solid(tall, {3.5, 4.5, 31.5}, 4), "octahedron centre (3.5, 4.5, 31.5) r 4"},
                            C{box_mesh({1.5, 1, 1}, {128.5, 4, 5}), box_solid(wide, {1.5, 1, 1}, {128.5, 4, 5}), "box [1.5,128.5]x[1,4]x[1,5] in 130 x 5 x 6"},
-                           C{box_mesh({-3, 1, 1}, {64, 4, 5}), box_solid(wide, {-3, 1, 1}, {64, 4, 5}), "box [-3,64]x[1,4]x[1,5] in 130 x 5 x 6"}})
+                           C{box_mesh({-3, 1, 1}, {64, 4, 5}), box_solid(wide, {-3, 1, 1}, {64, 4, 5}), "box [-3,64]x[1,4]x[1,5] in 130 x 5 x 6"},
+                           C{box_mesh({2, 0.5, 1}, {60, 1.5, 4}), box_solid(odd, {2, 0.5, 1}, {60, 1.5, 4}), "box [2,60]x[0.5,1.5]x[1,4] in 65 x 2 x 5"},
+                           C{box_mesh({1, 0.5, 0}, {62, 2, 3}), box_solid(odd2, {1, 0.5, 0}, {62, 2, 3}), "box [1,62]x[0.5,2]x[0,3] in 63 x 3 x 4"}})
             for (int axis = 0; axis < 3; ++axis)
                 for (int t : {1, 2, 4})
                     check_grid(parity_fill(c.s, c.want.dims, axis, t), c.want, c.what + ", axis " + std::to_string(axis) + ", " + std::to_string(t) + " thread(s)");
@@ -276,7 +278,7 @@ TEST_SUITE("Task 4: solid voxelization") {
             const PolygonSoup layer = dust(n, n, 1.2, shuffle);
             const Dims e{n, n, 3};
             const BitGrid want = grid_of(e, [](std::int64_t, std::int64_t, std::int64_t k) { return k >= 1; });
-            for (int rep = 0; rep < (shuffle ? 100 : 12); ++rep)
+            for (int rep = 0; rep < (shuffle ? 60 : 4); ++rep)
                 for (int t : {2, 8})
                     check_grid(parity_fill(layer, e, 2, t), want, (shuffle ? "shuffled dust layer " : "dust layer ") + str(e) + ", " + std::to_string(t) + " threads");
         }

@@ -83,7 +83,10 @@ void prefix_xor_run(std::vector<std::uint64_t>& w, std::uint64_t pos, std::uint6
 }
 // XOR the `len` bits from `src` into the `len` bits from `dst` (a row or a layer onto the next one).
 void xor_run(std::vector<std::uint64_t>& w, std::uint64_t src, std::uint64_t dst, std::uint64_t len) {
-    for (std::uint64_t off = 0; off < len; off += 64) {
+    std::uint64_t off = 0;
+    if (src % 64 == 0 && dst % 64 == 0)  // both start at a word (rows and layers of 64·m voxels): word by word
+        for (; off + 64 <= len; off += 64) w[(dst + off) / 64] ^= w[(src + off) / 64];
+    for (; off < len; off += 64) {
         const auto n = unsigned(std::min<std::uint64_t>(64, len - off));
         put_bits(w, dst + off, n, get_bits(w, dst + off, n) ^ get_bits(w, src + off, n));
     }
