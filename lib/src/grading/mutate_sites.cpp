@@ -850,7 +850,9 @@ inline int coverage_fd() {
 }
 inline void reached(long k) {
     static std::atomic<unsigned char> seen[1 << 16];
-    if (k < 0 || k >= (1 << 16) || seen[k].exchange(1)) return;
+    // a plain load first: sites in loops that several threads run are reached millions of times, and an exchange
+    // each time would bounce the flag's cache line between the cores
+    if (k < 0 || k >= (1 << 16) || seen[k].load(std::memory_order_relaxed) || seen[k].exchange(1)) return;
     char buf[32];
     const int n = std::snprintf(buf, sizeof buf, "%ld\n", k);
     (void)!::write(coverage_fd(), buf, static_cast<std::size_t>(n));
