@@ -3,7 +3,7 @@
 
 #include <charconv>
 #include <cmath>
-#include <fstream>
+#include <string_view>
 #include <sstream>
 
 #include <ft2build.h>
@@ -12,61 +12,80 @@
 
 #include "geolab/config.hpp"
 #include "geolab/errors.hpp"
+#include "geolab/io.hpp"
 
 namespace geolab {
 
 namespace {
 
+// A token for an error message: quoted, at most 40 bytes, unprintable bytes shown as '?'.
+std::string quoted(std::string_view t) {
+    std::string q = "'";
+    for (char c : t.substr(0, 40)) q += (c >= 32 && c < 127) ? c : '?';
+    return q + (t.size() > 40 ? "...'" : "'");
+}
+
 // Whitespace-separated tokens of one line.
-std::vector<std::string> tokens_of(const std::string& line) {
-    std::vector<std::string> out;
-    std::istringstream s(line);
-    for (std::string t; s >> t;) out.push_back(t);
+std::vector<std::string_view> tokens_of(std::string_view line) {
+    std::vector<std::string_view> out;
+    auto space = [](char c) { return c == ' ' || c == '\t' || c == '\f' || c == '\v'; };
+    std::size_t p = 0;
+    while (p < line.size()) {
+        while (p < line.size() && space(line[p])) ++p;
+        std::size_t e = p;
+        while (e < line.size() && !space(line[e])) ++e;
+        if (e > p) out.push_back(line.substr(p, e - p));
+        p = e;
+    }
     return out;
 }
 
-long parse_int(const std::string& file, std::size_t line, const std::string& tok, const char* what) {
+long parse_int(const std::string& file, std::size_t line, std::string_view tok, const char* what) {
     long v = 0;
     const auto [p, ec] = std::from_chars(tok.data(), tok.data() + tok.size(), v);
     if (ec != std::errc() || p != tok.data() + tok.size())
-        throw IoError(file, line, std::string(what) + " '" + tok + "' is not an integer");
+        throw IoError(file, line, std::string(what) + " " + quoted(tok) + " is not an integer");
     return v;
 }
 
-double parse_double(const std::string& file, std::size_t line, const std::string& tok) {
+double parse_double(const std::string& file, std::size_t line, std::string_view tok) {
     double v = 0;
     const auto [p, ec] = std::from_chars(tok.data(), tok.data() + tok.size(), v);
     if (ec == std::errc::result_out_of_range && p == tok.data() + tok.size())
-        throw IoError(file, line, "coordinate '" + tok + "' is out of the range of a double");
+        throw IoError(file, line, "coordinate " + quoted(tok) + " is out of the range of a double");
     if (ec != std::errc() || p != tok.data() + tok.size())
-        throw IoError(file, line, "coordinate '" + tok + "' is not a number");
-    if (!std::isfinite(v)) throw IoError(file, line, "coordinate '" + tok + "' is not finite");
+        throw IoError(file, line, "coordinate " + quoted(tok) + " is not a number");
+    if (!std::isfinite(v)) throw IoError(file, line, "coordinate " + quoted(tok) + " is not finite");
     return v;
 }
 
 }  // namespace
 
-std::vector<BezierPatch> read_bpt(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw IoError(path, 0, "cannot open the file");
-    std::size_t line_no = 0;
-    std::string line;
-    // The next line with a token (blank lines are skipped); false at the end of the file.
-    auto next = [&](std::vector<std::string>& toks) {
-        while (std::getline(in, line)) {
+std::vector<BezierPatch> read_bpt(const std::string& path) { return read_bpt_from_string(read_text_file(path), path); }
+
+std::vector<BezierPatch> read_bpt_from_string(std::string_view text, const std::string& path) {
+    if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);  // a UTF-8 byte order mark
+    std::size_t pos = 0, line_no = 0;
+    // The tokens of the next line holding one (blank lines are skipped); false at the end of the text. A line ends
+    // with LF, CRLF or a lone CR.
+    auto next = [&](std::vector<std::string_view>& toks) {
+        while (pos < text.size()) {
+            std::size_t e = pos;
+            while (e < text.size() && text[e] != '\n' && text[e] != '\r') ++e;
+            const std::string_view line = text.substr(pos, e - pos);
+            pos = e + (e + 1 < text.size() && text[e] == '\r' && text[e + 1] == '\n' ? 2 : 1);
             ++line_no;
-            if (!line.empty() && line.back() == '\r') line.pop_back();
             toks = tokens_of(line);
             if (!toks.empty()) return true;
         }
         return false;
     };
-    std::vector<std::string> t;
+    std::vector<std::string_view> t;
     if (!next(t)) throw IoError(path, line_no, "empty file: expected the patch count");
     if (t.size() != 1) throw IoError(path, line_no, "expected one number, the patch count");
     const long count = parse_int(path, line_no, t[0], "patch count");
     if (count < 1 || count > 100000)
-        throw IoError(path, line_no, "patch count " + t[0] + " is out of range (1..100000)");
+        throw IoError(path, line_no, "patch count " + std::to_string(count) + " is out of range (1..100000)");
     std::vector<BezierPatch> patches;
     patches.reserve(std::size_t(count));
     for (long k = 0; k < count; ++k) {
@@ -77,8 +96,8 @@ std::vector<BezierPatch> read_bpt(const std::string& path) {
         BezierPatch p;
         const long du = parse_int(path, line_no, t[0], "degree"), dv = parse_int(path, line_no, t[1], "degree");
         if (du < 1 || du > 30 || dv < 1 || dv > 30)
-            throw IoError(path, line_no, "patch " + std::to_string(k) + ": degrees " + t[0] + " " + t[1] +
-                                             " out of range (1..30)");
+            throw IoError(path, line_no, "patch " + std::to_string(k) + ": degrees " + std::to_string(du) + " " +
+                                             std::to_string(dv) + " out of range (1..30)");
         p.degree_u = int(du);
         p.degree_v = int(dv);
         const std::size_t n = std::size_t(du + 1) * std::size_t(dv + 1);
@@ -95,7 +114,7 @@ std::vector<BezierPatch> read_bpt(const std::string& path) {
         }
         patches.push_back(std::move(p));
     }
-    if (next(t)) throw IoError(path, line_no, "trailing data after the last patch: '" + line + "'");
+    if (next(t)) throw IoError(path, line_no, "trailing data after the last patch: " + quoted(t[0]));
     return patches;
 }
 
@@ -157,9 +176,15 @@ std::string hex(char32_t c) {
 }  // namespace
 
 GlyphOutline read_glyph(const std::string& font_path, char32_t codepoint) {
+    // Read through lib's read_text_file (regular files only, with the size limit), never by FreeType's own open:
+    // a FIFO would block it and /dev/zero has no end.
+    return read_glyph_from_memory(read_text_file(font_path), codepoint, font_path);
+}
+
+GlyphOutline read_glyph_from_memory(const std::string& font, char32_t codepoint, const std::string& font_path) {
     FtHandles ft;
     if (FT_Init_FreeType(&ft.lib)) throw IoError(font_path, 0, "FreeType could not be initialised");
-    if (FT_New_Face(ft.lib, font_path.c_str(), 0, &ft.face))
+    if (FT_New_Memory_Face(ft.lib, reinterpret_cast<const FT_Byte*>(font.data()), FT_Long(font.size()), 0, &ft.face))
         throw IoError(font_path, 0, "FreeType cannot open this file as a font");
     const FT_UInt index = FT_Get_Char_Index(ft.face, FT_ULong(codepoint));
     if (index == 0) throw IoError(font_path, 0, "the font has no glyph for " + hex(codepoint));

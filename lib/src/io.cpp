@@ -1105,7 +1105,7 @@ std::string read_file(const std::filesystem::path& path, std::uint64_t max_bytes
     const std::unique_ptr<const int, void (*)(const int*)> closer(&fd, [](const int* f) { ::close(*f); });
     struct stat st {};
     if (::fstat(fd, &st) != 0) throw IoError(path.string(), 0, std::string("cannot stat: ") + std::strerror(errno));
-    if (S_ISDIR(st.st_mode)) throw IoError(path.string(), 0, "is a directory, not a mesh file");
+    if (S_ISDIR(st.st_mode)) throw IoError(path.string(), 0, "is a directory, not a file");
     if (!S_ISREG(st.st_mode))
         throw IoError(path.string(), 0, "is " + file_kind(st.st_mode) + ", not a regular file: only files are read");
     const auto size = static_cast<std::uint64_t>(st.st_size);

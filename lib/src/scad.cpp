@@ -3,14 +3,15 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <fstream>
+#include <cstdio>
 #include <map>
+#include <memory>
 #include <numbers>
-#include <sstream>
 
 #include <glm/matrix.hpp>
 
 #include "geolab/errors.hpp"
+#include "geolab/io.hpp"
 
 namespace geolab::scad {
 
@@ -23,6 +24,10 @@ namespace {
 constexpr int max_depth = 256;
 constexpr std::size_t max_solids = 1'000'000;
 constexpr std::size_t max_vector = 1024;
+// Vector entries that arithmetic may create in one file. A variable is shared, not copied, when used, but `a + a`
+// on a 1000-vector makes 1000 entries from 3 bytes: without a budget a few kilobytes of `+` would take seconds and
+// nested vectors of variables gigabytes. Real scenes use a handful of 3- and 4-vectors per solid.
+constexpr std::size_t max_computed = 1'000'000;
 
 enum class Tok { end, number, ident, punct };
 
@@ -33,16 +38,30 @@ struct Token {
     int line = 1, column = 1;
 };
 
-// A value: a number, a boolean or a vector of values.
+// A value: a number, a boolean or a vector of values. A vector's entries are shared and never changed, so that
+// copying a value (using a variable) costs O(1) whatever its size.
 struct Value {
     enum Type { number, boolean, vector } type = number;
     double x = 0;
-    std::vector<Value> items;
+    std::shared_ptr<const std::vector<Value>> list;  // vector: the entries
+    const std::vector<Value>& items() const {
+        static const std::vector<Value> none;
+        return list ? *list : none;
+    }
+    static Value of(std::vector<Value> entries) {
+        Value v;
+        v.type = vector;
+        v.list = std::make_shared<const std::vector<Value>>(std::move(entries));
+        return v;
+    }
 };
 
 class Parser {
 public:
-    Parser(std::string_view text, const std::string& name) : s_(text), name_(name) { next(); }
+    Parser(std::string_view text, const std::string& name) : s_(text), name_(name) {
+        if (s_.starts_with("\xEF\xBB\xBF")) pos_ = 3;  // a UTF-8 byte order mark, as in every reader of lib
+        next();
+    }
 
     Scene run() {
         std::vector<int> top;
@@ -61,6 +80,7 @@ private:
     Token tok_;
     Scene scene_;
     std::size_t solids_ = 0;
+    std::size_t computed_ = 0;  // vector entries made by arithmetic so far (max_computed)
     std::map<std::string, Value> vars_;
 
     [[noreturn]] void fail(const Token& t, const std::string& msg) const {
@@ -69,10 +89,13 @@ private:
 
     // ---- lexer ----
     char peekc(std::size_t k = 0) const { return pos_ + k < s_.size() ? s_[pos_ + k] : '\0'; }
+    // A line ends with LF, CRLF or a lone CR (old Mac files), as in every reader of lib.
     void advance() {
-        if (s_[pos_] == '\n') {
+        if (s_[pos_] == '\n' || (s_[pos_] == '\r' && peekc(1) != '\n')) {
             ++line_;
             col_ = 1;
+        } else if (s_[pos_] == '\r') {
+            // CR of a CRLF: the LF ends the line
         } else if ((static_cast<unsigned char>(s_[pos_]) & 0xC0) != 0x80) {
             ++col_;  // count UTF-8 characters, not bytes
         }
@@ -82,7 +105,7 @@ private:
         for (;;) {  // whitespace and comments
             while (pos_ < s_.size() && std::isspace(static_cast<unsigned char>(s_[pos_]))) advance();
             if (peekc() == '/' && peekc(1) == '/') {
-                while (pos_ < s_.size() && s_[pos_] != '\n') advance();
+                while (pos_ < s_.size() && s_[pos_] != '\n' && s_[pos_] != '\r') advance();
             } else if (peekc() == '/' && peekc(1) == '*') {
                 const int l = line_, c = col_;
                 advance();
@@ -141,6 +164,13 @@ private:
             advance();
             return;
         }
+        if (static_cast<unsigned char>(c) < 32 || c == 127) {  // named, not printed raw into the message
+            char hex[8];
+            std::snprintf(hex, sizeof hex, "%02X", static_cast<unsigned>(static_cast<unsigned char>(c)));
+            tok_.text = std::string("control character 0x") + hex;
+            advance();
+            return;
+        }
         tok_.text = std::string(1, c);
         advance();
     }
@@ -194,11 +224,21 @@ private:
         }
         return primary(depth);
     }
-    Value negate(const Token& at, Value v) {
+    // Counts `n` vector entries made by arithmetic against max_computed.
+    void compute(std::size_t n, const Token& at) {
+        computed_ += n;
+        if (computed_ > max_computed)
+            fail(at, "the expressions compute more than " + std::to_string(max_computed) +
+                         " vector entries (vectors of vectors in arithmetic?)");
+    }
+    Value negate(const Token& at, const Value& v) {
         if (v.type == Value::boolean) fail(at, "cannot negate a boolean");
-        if (v.type == Value::number) v.x = -v.x;
-        for (Value& e : v.items) e = negate(at, e);
-        return v;
+        if (v.type == Value::number) return Value{Value::number, -v.x, {}};
+        compute(v.items().size(), at);
+        std::vector<Value> r;
+        r.reserve(v.items().size());
+        for (const Value& e : v.items()) r.push_back(negate(at, e));
+        return Value::of(std::move(r));
     }
     Value primary(int depth) {
         const Token t = tok_;
@@ -214,18 +254,18 @@ private:
         }
         if (is("[")) {
             next();
-            Value v{Value::vector, 0, {}};
+            std::vector<Value> items;
             if (!is("]")) {
                 for (;;) {
-                    if (v.items.size() >= max_vector) fail(t, "vector longer than " + std::to_string(max_vector));
-                    v.items.push_back(expr(depth + 1));
+                    if (items.size() >= max_vector) fail(t, "vector longer than " + std::to_string(max_vector));
+                    items.push_back(expr(depth + 1));
                     if (is(":")) fail(tok_, "ranges '[a : b]' are not in the supported subset");
                     if (!is(",")) break;
                     next();
                 }
             }
             expect("]", "to close the vector");
-            return v;
+            return Value::of(std::move(items));
         }
         if (t.kind == Tok::ident) {
             next();
@@ -248,23 +288,29 @@ private:
             if (!std::isfinite(r.x)) fail(op, std::string("'") + o + "' gives a value that is not finite");
             return r;
         }
-        r.type = Value::vector;
+        std::vector<Value> items;
         if (a.type == Value::vector && b.type == Value::vector) {
             if (o != '+' && o != '-') fail(op, std::string("vector ") + o + " vector is not in the supported subset");
-            if (a.items.size() != b.items.size()) fail(op, "vectors of different lengths");
-            for (std::size_t i = 0; i < a.items.size(); ++i) r.items.push_back(arith(op, a.items[i], b.items[i]));
-            return r;
+            if (a.items().size() != b.items().size()) fail(op, "vectors of different lengths");
+            compute(a.items().size(), op);
+            items.reserve(a.items().size());
+            for (std::size_t i = 0; i < a.items().size(); ++i) items.push_back(arith(op, a.items()[i], b.items()[i]));
+            return Value::of(std::move(items));
         }
         if (o == '+' || o == '-') fail(op, std::string("number ") + o + " vector is not in the supported subset");
         if (a.type == Value::vector && o == '/') {
-            for (const Value& e : a.items) r.items.push_back(arith(op, e, b));
-            return r;
+            compute(a.items().size(), op);
+            items.reserve(a.items().size());
+            for (const Value& e : a.items()) items.push_back(arith(op, e, b));
+            return Value::of(std::move(items));
         }
         if (o == '/') fail(op, "number / vector is not in the supported subset");
         const Value& v = a.type == Value::vector ? a : b;
         const Value& s = a.type == Value::vector ? b : a;
-        for (const Value& e : v.items) r.items.push_back(arith(op, s, e));
-        return r;
+        compute(v.items().size(), op);
+        items.reserve(v.items().size());
+        for (const Value& e : v.items()) items.push_back(arith(op, s, e));
+        return Value::of(std::move(items));
     }
 
     // ---- arguments ----
@@ -310,12 +356,12 @@ private:
     }
     glm::dvec3 vec3_of(const Arg& a, const std::string& what, bool allow_2 = false) {
         const Value& v = a.value;
-        if (v.type != Value::vector || !(v.items.size() == 3 || (allow_2 && v.items.size() == 2)))
+        if (v.type != Value::vector || !(v.items().size() == 3 || (allow_2 && v.items().size() == 2)))
             fail(a.at, what + " must be a vector [x, y, z]");
         glm::dvec3 r(0.0);
-        for (std::size_t i = 0; i < v.items.size(); ++i) {
-            if (v.items[i].type != Value::number) fail(a.at, what + " must hold numbers");
-            r[int(i)] = v.items[i].x;
+        for (std::size_t i = 0; i < v.items().size(); ++i) {
+            if (v.items()[i].type != Value::number) fail(a.at, what + " must hold numbers");
+            r[int(i)] = v.items()[i].x;
         }
         return r;
     }
@@ -535,7 +581,7 @@ private:
             if (!b.count("v")) fail(t, "scale needs a number or a vector");
             const Arg* a = b.at("v");
             glm::dvec3 s = a->value.type == Value::number ? glm::dvec3(a->value.x) : vec3_of(*a, "scale v", true);
-            if (a->value.type == Value::vector && a->value.items.size() == 2) s.z = 1;
+            if (a->value.type == Value::vector && a->value.items().size() == 2) s.z = 1;
             for (int i = 0; i < 3; ++i)
                 if (s[i] == 0) fail(a->at, "scale by 0 flattens the solid (not supported)");
             T[0][0] = s.x;
@@ -570,15 +616,15 @@ private:
             if (!b.count("m")) fail(t, "multmatrix needs a matrix");
             const Arg* a = b.at("m");
             const Value& v = a->value;
-            if (v.type != Value::vector || (v.items.size() != 3 && v.items.size() != 4))
+            if (v.type != Value::vector || (v.items().size() != 3 && v.items().size() != 4))
                 fail(a->at, "multmatrix m must be 3 or 4 rows of 4 numbers");
-            for (std::size_t r = 0; r < v.items.size(); ++r) {
-                const Value& row = v.items[r];
-                if (row.type != Value::vector || row.items.size() != 4)
+            for (std::size_t r = 0; r < v.items().size(); ++r) {
+                const Value& row = v.items()[r];
+                if (row.type != Value::vector || row.items().size() != 4)
                     fail(a->at, "multmatrix m must be 3 or 4 rows of 4 numbers");
                 for (int c = 0; c < 4; ++c) {
-                    if (row.items[c].type != Value::number) fail(a->at, "multmatrix m must hold numbers");
-                    T[c][int(r)] = row.items[c].x;
+                    if (row.items()[c].type != Value::number) fail(a->at, "multmatrix m must hold numbers");
+                    T[c][int(r)] = row.items()[c].x;
                 }
             }
             if (T[0][3] != 0 || T[1][3] != 0 || T[2][3] != 0 || T[3][3] != 1)
@@ -603,12 +649,8 @@ private:
 Scene parse(std::string_view text, const std::string& name) { return Parser(text, name).run(); }
 
 Scene read(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw IoError(path, 0, "cannot open the file");
-    std::ostringstream s;
-    s << in.rdbuf();
-    if (in.bad()) throw IoError(path, 0, "read error");
-    return parse(s.str(), path);
+    // lib's read_text_file: a FIFO, a device (/dev/zero) or a directory is refused, the size is capped
+    return parse(read_text_file(path), path);
 }
 
 }  // namespace geolab::scad

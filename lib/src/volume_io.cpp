@@ -8,6 +8,7 @@
 #include <cmath>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 #include <string_view>
@@ -59,6 +60,13 @@ void check_volume_mesh(const VolumeMesh& m) {
 
 namespace {
 
+// A word for an error message: quoted, at most 40 bytes, unprintable bytes shown as '?'.
+std::string quoted(std::string_view w) {
+    std::string q = "'";
+    for (char c : w.substr(0, 40)) q += (c >= 32 && c < 127) ? c : '?';
+    return q + (w.size() > 40 ? "...'" : "'");
+}
+
 // Whitespace-separated words with line numbers; '#' comments to the end of the line; LF, CRLF or CR line ends.
 class Words {
 public:
@@ -85,7 +93,7 @@ public:
         std::int64_t v = 0;
         const auto r = std::from_chars(w.data(), w.data() + w.size(), v);
         if (r.ec != std::errc() || r.ptr != w.data() + w.size())
-            fail(std::string("expected an integer (") + what + "), got '" + std::string(w.substr(0, 40)) + "'");
+            fail(std::string("expected an integer (") + what + "), got " + quoted(w));
         return v;
     }
     double real(const char* what) {
@@ -94,7 +102,7 @@ public:
         const auto r = std::from_chars(w.data(), w.data() + w.size(), v);
         if (r.ec == std::errc::result_out_of_range) fail(std::string(what) + " is out of the range of a double");
         if (r.ec != std::errc() || r.ptr != w.data() + w.size())
-            fail(std::string("expected a number (") + what + "), got '" + std::string(w.substr(0, 40)) + "'");
+            fail(std::string("expected a number (") + what + "), got " + quoted(w));
         if (!std::isfinite(v)) fail(std::string(what) + " is not finite");
         return v;
     }
@@ -105,6 +113,13 @@ public:
         if (numbers > 0 && std::uint64_t(n) > left() / (2 * numbers))
             fail(std::string(what) + " is " + std::to_string(n) + ", more than the rest of the file can hold");
         return std::size_t(n);
+    }
+    //! An integer label (Medit reference, TetGen marker) that must fit in 32 bits.
+    std::int32_t label(const char* what) {
+        const std::int64_t v = integer(what);
+        if (v < std::numeric_limits<std::int32_t>::min() || v > std::numeric_limits<std::int32_t>::max())
+            fail(std::string(what) + " " + std::to_string(v) + " does not fit in 32 bits");
+        return std::int32_t(v);
     }
     //! A 0-based index from a number with the given base, in [0, n).
     std::uint32_t index(const char* what, std::int64_t base, std::size_t n) {
@@ -168,11 +183,20 @@ VolumeMesh read_medit_from_string(const std::string& data, const std::string& na
     Words in(data, name);
     if (in.at_end()) in.fail("empty file");
     VolumeMesh m;
-    bool have_vertices = false, have_dimension = false;
+    bool have_vertices = false, have_dimension = false, have_end = false;
+    std::map<std::string, std::size_t> seen;  // section (lower case) -> the line of its keyword
     while (!in.at_end()) {
         const std::string_view kw = in.word("a keyword");
         const std::string key(kw);
-        if (iequals(kw, "End")) break;
+        // Each keyword once: a second Tetrahedra section would otherwise be appended silently (libMeshb keeps one).
+        std::string lower = key;
+        std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+        if (const auto [it, first] = seen.emplace(lower, in.line()); !first)
+            in.fail("a second " + quoted(kw) + " section (the first is at line " + std::to_string(it->second) + ")");
+        if (iequals(kw, "End")) {
+            have_end = true;
+            break;
+        }
         if (iequals(kw, "MeshVersionFormatted")) {
             const auto v = in.integer("the version");
             if (v < 1 || v > 4) in.fail("MeshVersionFormatted " + std::to_string(v) + " is not a known version");
@@ -181,7 +205,6 @@ VolumeMesh read_medit_from_string(const std::string& data, const std::string& na
             if (d != 3) in.fail("Dimension " + std::to_string(d) + ": only 3D meshes are read");
             have_dimension = true;
         } else if (iequals(kw, "Vertices")) {
-            if (have_vertices) in.fail("a second Vertices section");
             const std::size_t n = in.count("the number of vertices", 4);
             if (n > std::numeric_limits<std::uint32_t>::max() - 1) in.fail("too many vertices");
             m.positions.reserve(n);
@@ -201,16 +224,14 @@ VolumeMesh read_medit_from_string(const std::string& data, const std::string& na
             if (!have_vertices) in.fail(key + " before Vertices (the vertices must come first)");
             const std::size_t k = std::size_t(type);
             const std::size_t n = in.count(("the number of " + key).c_str(), k + 1);
+            if (n > (std::numeric_limits<std::uint32_t>::max() - m.corners.size()) / k) in.fail("too many cells");
             std::uint32_t v[8];
             for (std::size_t i = 0; i < n; ++i) {
                 for (std::size_t j = 0; j < k; ++j) v[j] = in.index("a corner index", 1, m.n_vertices());
                 for (std::size_t a = 0; a < k; ++a)
                     for (std::size_t b = 0; b < a; ++b)
                         if (v[a] == v[b]) in.fail(key + " entry " + std::to_string(i + 1) + " repeats vertex " + std::to_string(v[a] + 1));
-                const auto label = in.integer("the element reference");
-                if (label < std::numeric_limits<std::int32_t>::min() || label > std::numeric_limits<std::int32_t>::max())
-                    in.fail("the element reference does not fit in 32 bits");
-                m.add_cell(type, std::span<const std::uint32_t>(v, k), std::int32_t(label));
+                m.add_cell(type, std::span<const std::uint32_t>(v, k), in.label("the element reference"));
             }
         } else if (iequals(kw, "Triangles")) {
             if (!have_vertices) in.fail("Triangles before Vertices (the vertices must come first)");
@@ -218,9 +239,11 @@ VolumeMesh read_medit_from_string(const std::string& data, const std::string& na
             for (std::size_t i = 0; i < n; ++i) {
                 std::array<std::uint32_t, 3> t{};
                 for (auto& x : t) x = in.index("a corner index", 1, m.n_vertices());
-                const auto label = in.integer("the triangle reference");
+                if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
+                    in.fail("Triangles entry " + std::to_string(i + 1) + " repeats a vertex (" + std::to_string(t[0] + 1) +
+                            " " + std::to_string(t[1] + 1) + " " + std::to_string(t[2] + 1) + ")");
                 m.triangles.push_back(t);
-                m.triangle_labels.push_back(std::int32_t(std::clamp<std::int64_t>(label, INT32_MIN, INT32_MAX)));
+                m.triangle_labels.push_back(in.label("the triangle reference"));
             }
         } else {
             // sections read and ignored: their entries' sizes
@@ -235,7 +258,7 @@ VolumeMesh read_medit_from_string(const std::string& data, const std::string& na
             const Skip* s = nullptr;
             for (const Skip& x : skips)
                 if (iequals(kw, x.name)) s = &x;
-            if (!s) in.fail("unknown keyword '" + std::string(kw.substr(0, 40)) + "'");
+            if (!s) in.fail("unknown keyword " + quoted(kw));
             const std::size_t n = in.count("the number of entries", std::size_t(s->ints + s->reals));
             for (std::size_t i = 0; i < n; ++i) {
                 for (int j = 0; j < s->ints; ++j) (void)in.integer(s->name);
@@ -245,6 +268,9 @@ VolumeMesh read_medit_from_string(const std::string& data, const std::string& na
     }
     if (!have_dimension && !have_vertices) in.fail("not a Medit mesh (no Dimension and no Vertices)");
     if (!have_vertices) in.fail("no Vertices section");
+    // Without End a file cut after a whole section would read as a smaller, valid mesh.
+    if (!have_end) in.fail("the file ends without 'End' (truncated?)");
+    if (!in.at_end()) in.fail("data after 'End': " + quoted(in.word("")));
     return m;
 }
 
@@ -327,9 +353,11 @@ VolumeMesh read_tetgen_from_strings(const std::string& node, const std::string& 
                 in.fail("face " + std::to_string(idx) + " where " + std::to_string(first + std::int64_t(i)) + " was expected");
             std::array<std::uint32_t, 3> t{};
             for (auto& x : t) x = in.index("a corner index", first, m.n_vertices());
-            const auto mark = marks ? in.integer("the face's boundary marker") : 0;
+            if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
+                in.fail("face " + std::to_string(idx) + " repeats a node (" + std::to_string(t[0] + first) + " " +
+                        std::to_string(t[1] + first) + " " + std::to_string(t[2] + first) + ")");
             m.triangles.push_back(t);
-            m.triangle_labels.push_back(std::int32_t(std::clamp<std::int64_t>(mark, INT32_MIN, INT32_MAX)));
+            m.triangle_labels.push_back(marks ? in.label("the face's boundary marker") : 0);
         }
         if (!in.at_end()) in.fail("more data after the last face");
     }

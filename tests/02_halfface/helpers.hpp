@@ -1,5 +1,5 @@
 #pragma once
-// Lab 02 test helpers: reference answers computed from the cell list by brute force (std::map / std::set),
+// Lab 02 test helpers: reference answers computed from the cell list by brute force (sorting, std::map / std::set),
 // independently of any half-face code; checks of a Mesh through the kernel's accessors in every configuration.
 #include <algorithm>
 #include <cmath>
@@ -48,29 +48,35 @@ inline std::vector<std::uint32_t> face_key(std::vector<std::uint32_t> c) {
 
 struct Reference {
     std::size_t V = 0, E = 0, F = 0, C = 0, boundary_faces = 0;
-    std::set<std::pair<std::uint32_t, std::uint32_t>> edges;       // (min, max)
-    std::map<std::vector<std::uint32_t>, std::vector<std::uint32_t>> face_cells;  // face key -> cells using it
-    std::vector<std::vector<std::vector<std::uint32_t>>> cell_faces;  // per cell, its faces rotated to min
 };
 
+// The counts of a cell list by sorting: distinct undirected edges (vertex pairs), distinct faces (sorted vertex
+// sets) and the faces used once (boundary).
 inline Reference reference(const CellList& cl) {
     Reference r;
     r.V = cl.n_vertices();
     r.C = cl.n_cells();
-    r.cell_faces.resize(r.C);
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
+    std::vector<std::vector<std::uint32_t>> faces;
     for (std::size_t c = 0; c < cl.n_cells(); ++c)
         for (std::size_t i = 0; i < cl.n_faces(c); ++i) {
             auto f = to_vec(cl.face(c, i));
-            r.cell_faces[c].push_back(rotate_min(f));
-            r.face_cells[face_key(f)].push_back(std::uint32_t(c));
             for (std::size_t k = 0; k < f.size(); ++k) {
                 const auto a = f[k], b = f[(k + 1) % f.size()];
-                r.edges.insert({std::min(a, b), std::max(a, b)});
+                edges.push_back({std::min(a, b), std::max(a, b)});
             }
+            faces.push_back(face_key(f));
         }
-    r.E = r.edges.size();
-    r.F = r.face_cells.size();
-    for (auto& [k, cs] : r.face_cells) r.boundary_faces += cs.size() == 1;
+    std::sort(edges.begin(), edges.end());
+    r.E = std::size_t(std::unique(edges.begin(), edges.end()) - edges.begin());
+    std::sort(faces.begin(), faces.end());
+    for (std::size_t a = 0; a < faces.size();) {
+        std::size_t b = a + 1;
+        while (b < faces.size() && faces[b] == faces[a]) ++b;
+        ++r.F;
+        r.boundary_faces += b - a == 1;
+        a = b;
+    }
     return r;
 }
 
@@ -87,6 +93,39 @@ std::vector<std::uint32_t> loop_vertices(const M& m, HalfFace hf) {
         if (out.size() > m.n_halfedges()) break;
     } while (h != h0);
     return out;
+}
+
+// Deletes cell c through the kernel alone, as delete_cell's contract says, for the tests of the other tasks
+// (which must not depend on your Task 3): its half-faces lose their cell and their half-edges their twin, a face
+// with no cell left is deleted, an edge without an alive half-edge is deleted, halfedge(e) and halfedge(v) move
+// to alive half-edges (found by a scan) or become invalid, and the vertex cache is rebuilt.
+inline void kernel_delete_cell(Mesh& m, Cell c) {
+    if (m.is_deleted(c)) return;
+    m.set_deleted(c, true);
+    for (HalfFace hf : m.halffaces(c)) {
+        m.set_cell(hf, Cell{});
+        const HalfEdge h0 = m.halfedge(hf);
+        HalfEdge h = h0;
+        do {
+            m.set_twin(h, HalfEdge{});
+            h = m.next(h);
+        } while (h != h0);
+        if (!m.cell(Mesh::opposite(hf)).is_valid()) m.set_deleted(Mesh::face(hf), true);
+    }
+    std::vector<HalfEdge> of_edge(m.n_edges()), leaving(m.n_vertices());
+    for (HalfEdge h : m.halfedges())
+        if (!m.is_deleted(h)) {
+            if (!of_edge[m.edge(h).idx].is_valid()) of_edge[m.edge(h).idx] = h;
+            if (!leaving[m.from_vertex(h).idx].is_valid()) leaving[m.from_vertex(h).idx] = h;
+        }
+    for (Edge e : m.edges())
+        if (!m.is_deleted(e) && m.is_deleted(m.halfedge(e))) {
+            m.set_halfedge(e, of_edge[e.idx]);
+            if (!of_edge[e.idx].is_valid()) m.set_deleted(e, true);
+        }
+    for (Vertex v : m.vertices())
+        if (!m.is_deleted(v) && m.halfedge(v).is_valid() && m.is_deleted(m.halfedge(v))) m.set_halfedge(v, leaving[v.idx]);
+    m.rebuild_vertex_cache();
 }
 
 // Runs validate() and fails the test with its message.

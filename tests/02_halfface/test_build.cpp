@@ -22,6 +22,17 @@ void expect_error(const CellList& cl, const std::string& input, const std::vecto
     }
 }
 
+// build_mesh must throw a TopologyError whose message is exactly `expected` (the contract gives these in full).
+void expect_message(const CellList& cl, const std::string& input, const std::string& expected) {
+    INFO("input: " << input);
+    try {
+        (void)build_mesh(cl);
+        FAIL("build_mesh accepted it: expected a TopologyError \"" << expected << "\"");
+    } catch (const geolab::TopologyError& e) {
+        CHECK_MESSAGE(std::string(e.what()) == expected, "expected the message \"" << expected << "\"; got: " << e.what());
+    }
+}
+
 void check_counts(const Mesh& m, const CellList& cl, const std::string& what) {
     const Reference r = reference(cl);
     INFO("input: " << what);
@@ -94,6 +105,13 @@ TEST_SUITE("Task 1: build") {
             require_valid(m, f.name);
             check_counts(m, f.cells, f.name);
         }
+        // a triangle (0 1 3) made of three corners of the quad (0 1 3 2): two different faces
+        CellList hex_and_tet = fx::hex_grid(1);
+        hex_and_tet.positions.push_back({0.7, 0.3, -1});  // 8, below the cube
+        hex_and_tet.add_tet(0, 3, 1, 8);
+        const Mesh m = build_mesh(hex_and_tet);
+        require_valid(m, "a hexahedron and a tetrahedron on three corners of its bottom quad");
+        check_counts(m, hex_and_tet, "a hexahedron and a tetrahedron on three corners of its bottom quad");
     }
 
     TEST_CASE("build: each cell lists its faces in order / numbered by first use / 2f for the first cell" *
@@ -144,17 +162,36 @@ TEST_SUITE("Task 1: build") {
                            "twice. Message: \"build_mesh: degenerate cell C: ...\".")) {
         CellList three_faces = fx::single_tet();
         three_faces.add_polyhedron({{0, 2, 1}, {0, 1, 3}, {1, 2, 3}});
-        expect_error<geolab::TopologyError>(three_faces, "cell 1 with 3 faces", {"degenerate cell 1"});
+        expect_error<geolab::TopologyError>(three_faces, "cell 1 with 3 faces", {"degenerate cell 1: it has 3 faces"});
+        CellList empty_cell = fx::two_tets();
+        empty_cell.cell_begin = {0, 4, 4, 8};  // cell 1 has no face
+        expect_error<geolab::TopologyError>(empty_cell, "cell 1 with no face", {"degenerate cell 1: it has 0 faces"});
+        CellList empty_face = fx::two_tets();
+        empty_face.face_begin[2] = empty_face.face_begin[1];  // face 1 of cell 0 has no vertex (face 2 takes them)
+        expect_error<geolab::TopologyError>(empty_face, "cell 0 with a face of 0 vertices",
+                                            {"degenerate cell 0: face 1 has 0 vertices"});
         CellList two_gon = fx::single_tet();
         two_gon.add_polyhedron({{0, 2, 1}, {0, 1}, {1, 2, 3}, {2, 0, 3}, {0, 1, 3}});
         expect_error<geolab::TopologyError>(two_gon, "cell 1 with a 2-vertex face", {"degenerate cell 1"});
         CellList repeated = fx::single_tet();
-        repeated.add_polyhedron({{0, 2, 1}, {0, 1, 1, 3}, {1, 2, 3}, {2, 0, 3}});
-        expect_error<geolab::TopologyError>(repeated, "cell 1 with a face repeating vertex 1", {"degenerate cell 1", "1"});
+        repeated.add_polyhedron({{0, 2, 1}, {0, 1, 2, 1, 3}, {1, 2, 3}, {2, 0, 3}});
+        expect_error<geolab::TopologyError>(repeated, "cell 1 with a face repeating vertex 1",
+                                            {"degenerate cell 1", "face 1 repeats vertex 1"});
         CellList twice;
         twice.positions = fx::single_tet().positions;
         twice.add_polyhedron({{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3}, {1, 3, 0}});
-        expect_error<geolab::TopologyError>(twice, "cell 0 listing face (0 1 3) twice", {"degenerate cell 0"});
+        expect_error<geolab::TopologyError>(twice, "cell 0 listing face (0 1 3) twice",
+                                            {"degenerate cell 0", "faces 1 and 4 are the same polygon (0 1 3)"});
+        CellList twice_first;  // the polygon that sorts first, twice
+        twice_first.positions = twice.positions;
+        twice_first.add_polyhedron({{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3}, {1, 0, 2}});
+        expect_error<geolab::TopologyError>(twice_first, "cell 0 listing face (0 2 1) twice",
+                                            {"faces 0 and 4 are the same polygon (0 2 1)"});
+        CellList twice_last;  // the polygon that sorts last, twice
+        twice_last.positions = twice.positions;
+        twice_last.add_polyhedron({{2, 3, 1}, {0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3}});
+        expect_error<geolab::TopologyError>(twice_last, "cell 0 listing face (1 2 3) twice",
+                                            {"faces 0 and 3 are the same polygon (2 3 1)"});
     }
 
     TEST_CASE("build: a cell that is not closed is rejected naming the cell and an edge" * geolab::points(2) *
@@ -163,7 +200,28 @@ TEST_SUITE("Task 1: build") {
                            "...\".")) {
         CellList flipped = fx::two_tets();
         flipped.add_polyhedron({{0, 1, 2}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3}});  // one face flipped
-        expect_error<geolab::TopologyError>(flipped, "cell 2 with a flipped face", {"cell 2 is not closed", "edge from vertex"});
+        expect_error<geolab::TopologyError>(flipped, "cell 2 with a flipped face",
+                                            {"cell 2 is not closed", "the edge from vertex 0 to vertex 1 is used 2 time(s) in "
+                                                                     "that direction and 0 time(s) in the other"});
+        CellList flipped_late = fx::two_tets();
+        flipped_late.add_polyhedron({{0, 2, 1}, {0, 1, 3}, {1, 3, 2}, {2, 0, 3}});  // its face (1 2 3) flipped
+        expect_error<geolab::TopologyError>(flipped_late, "cell 2 with its face (1 2 3) flipped",
+                                            {"cell 2 is not closed", "the edge from vertex 1 to vertex 3 is used 2 time(s) in "
+                                                                     "that direction and 0 time(s) in the other"});
+        // a hexahedron with its top face listed clockwise (seen from outside)
+        const CellList grid = fx::hex_grid(2);
+        CellList hexes;
+        hexes.positions = grid.positions;
+        for (std::size_t c = 0; c < grid.n_cells(); ++c) {
+            for (std::size_t i = 0; i < grid.n_faces(c); ++i) {
+                std::vector<std::uint32_t> f = to_vec(grid.face(c, i));
+                if (c == 5 && i == 1) std::reverse(f.begin(), f.end());
+                hexes.add_face(f);
+            }
+            hexes.close_cell(CellType::hexahedron);
+        }
+        expect_error<geolab::TopologyError>(hexes, "hex grid 2 with cell 5's top face mis-oriented",
+                                            {"cell 5 is not closed", "the edge from vertex"});
         CellList open;
         open.positions = fx::hex_grid(1).positions;
         open.add_polyhedron({{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {1, 3, 7, 5}, {3, 2, 6, 7}});  // a box without a lid
@@ -176,8 +234,8 @@ TEST_SUITE("Task 1: build") {
         CellList cl = fx::two_tets();
         cl.positions.push_back({0.3, 0.3, 2});  // 5: another apex above
         cl.add_tet(0, 1, 2, 5);
-        expect_error<geolab::TopologyError>(cl, "three tets on face (0 1 2)",
-                                            {"used by 3 or more cells", "cell 0", "cell 1", "cell 2"});
+        expect_message(cl, "three tets on face (0 1 2)",
+                       "build_mesh: face (0 2 1) is used by 3 or more cells: cell 0, cell 1, cell 2");
     }
 
     TEST_CASE("build: two cells listing a shared face the same way are rejected (inconsistent orientation)" *
@@ -188,8 +246,18 @@ TEST_SUITE("Task 1: build") {
         CellList cl = fx::single_tet();
         cl.positions.push_back({0.3, 0.3, 1.5});
         cl.add_polyhedron({{0, 1, 4}, {1, 2, 4}, {2, 0, 4}, {0, 2, 1}});  // an inverted tet on the same base side
-        expect_error<geolab::TopologyError>(cl, "two tets on the same side of face (0 2 1)",
-                                            {"inconsistent orientation", "cell 0", "cell 1"});
+        expect_message(cl, "two tets on the same side of face (0 2 1)",
+                       "build_mesh: inconsistent orientation: cell 0 and cell 1 both list face (0 2 1) in the same "
+                       "direction");
+        CellList later = fx::single_tet();  // the same two cells after an unrelated cell 0
+        for (const auto& p : {glm::dvec3(2, 0, 0), glm::dvec3(3, 0, 0), glm::dvec3(2, 1, 0), glm::dvec3(2, 0, 1),
+                              glm::dvec3(2.3, 0.3, 1.5)})
+            later.positions.push_back(p);
+        later.add_tet(4, 5, 6, 7);                                          // cell 1: its face 0 is (4 6 5)
+        later.add_polyhedron({{4, 5, 8}, {5, 6, 8}, {6, 4, 8}, {4, 6, 5}});  // cell 2 lists (4 6 5) too
+        expect_message(later, "cells 1 and 2 on the same side of face (4 6 5)",
+                       "build_mesh: inconsistent orientation: cell 1 and cell 2 both list face (4 6 5) in the same "
+                       "direction");
     }
 
     TEST_CASE("build: an index out of range or a non-finite position is std::invalid_argument" * geolab::points(1) *
@@ -197,10 +265,52 @@ TEST_SUITE("Task 1: build") {
                            "vertices)\".")) {
         CellList bad = fx::single_tet();
         bad.add_tet(0, 1, 2, 9);
-        expect_error<std::invalid_argument>(bad, "cell 1 uses vertex 9 of 4", {"cell 1", "9", "out of range"});
+        expect_error<std::invalid_argument>(bad, "cell 1 uses vertex 9 of 4", {"cell 1 face 1: vertex 9 out of range (4 vertices)"});
+        CellList first;
+        first.positions = fx::single_tet().positions;
+        first.add_tet(0, 1, 4, 3);  // its face 0 is (0 4 1)
+        expect_error<std::invalid_argument>(first, "cell 0 uses vertex 4 of 4 in its face 0",
+                                            {"cell 0 face 0: vertex 4 out of range (4 vertices)"});
         CellList nan = fx::single_tet();
         nan.positions[2].y = std::nan("");
-        expect_error<std::invalid_argument>(nan, "vertex 2 is NaN", {"vertex 2"});
+        expect_error<std::invalid_argument>(nan, "vertex 2 is NaN", {"vertex 2 has a position that is not finite"});
+        CellList inf = fx::single_tet();
+        inf.positions[0].z = std::numeric_limits<double>::infinity();
+        expect_error<std::invalid_argument>(inf, "vertex 0 has z = +infinity", {"vertex 0 has a position that is not finite"});
+        // offsets that do not fit
+        CellList no_cells = fx::two_tets();
+        no_cells.cell_begin = std::vector<std::uint32_t>{};  // empty, without even room for one element
+        expect_error<std::invalid_argument>(no_cells, "two tets with cell_begin empty", {"offsets do not match its faces"});
+        CellList no_faces = fx::two_tets();
+        no_faces.face_begin = std::vector<std::uint32_t>{};
+        expect_error<std::invalid_argument>(no_faces, "two tets with face_begin empty", {"offsets do not match its faces"});
+        CellList short_faces = fx::two_tets();
+        short_faces.face_begin.pop_back();
+        short_faces.face_vertices.resize(short_faces.face_begin.back());
+        expect_error<std::invalid_argument>(short_faces, "two tets with 7 faces for 8 face offsets of the cells",
+                                            {"offsets do not match its faces"});
+        CellList extra_vertex = fx::two_tets();
+        extra_vertex.face_vertices.push_back(0);
+        expect_error<std::invalid_argument>(extra_vertex, "two tets with one vertex index more than the faces use",
+                                            {"offsets do not match its faces"});
+        CellList late_start = fx::two_tets();
+        late_start.cell_begin[0] = 1;  // face 0 belongs to no cell
+        expect_error<std::invalid_argument>(late_start, "two tets with cell_begin (1 4 8)", {"offsets do not match its faces"});
+        CellList late_vertices = fx::two_tets();
+        late_vertices.face_begin[0] = 1;  // vertex index 0 belongs to no face
+        expect_error<std::invalid_argument>(late_vertices, "two tets with face_begin (1 3 6 ...)",
+                                            {"offsets do not match its faces"});
+        CellList down = fx::two_tets();
+        down.cell_begin = {0, 9, 8};  // cell 1 would end before it starts
+        expect_error<std::invalid_argument>(down, "two tets with cell_begin (0 9 8)", {"cell 1 has decreasing offsets"});
+        CellList face_down = fx::two_tets();
+        face_down.face_begin[1] = 7;  // face 1 of cell 0 would end before it starts
+        expect_error<std::invalid_argument>(face_down, "two tets with face_begin (0 7 6 ...)",
+                                            {"cell 0 face 1 has decreasing offsets"});
+        CellList first_face_down = fx::two_tets();
+        first_face_down.face_begin[4] = 16;  // face 0 of cell 1 would end (15) before it starts
+        expect_error<std::invalid_argument>(first_face_down, "two tets with face_begin (0 3 6 9 16 15 ...)",
+                                            {"cell 1 face 0 has decreasing offsets"});
     }
 
     TEST_CASE("build: tetgen meshes of real models (sphere and bunny00) validate with the right counts" *

@@ -33,6 +33,52 @@ std::vector<HalfFace> scan_halffaces(const Mesh& m, Vertex v) {
     std::sort(out.begin(), out.end());
     return out;
 }
+// True when the alive half-faces at v form one group joined by "same face" (hf, opposite(hf)) and "same cell":
+// then the walk of a configuration without the cache finds them all (halfface/mesh.hpp). After deletions a vertex
+// can be pinched (its cells meet only at v, or along an edge).
+bool walk_finds_all(const Mesh& m, Vertex v) {
+    const auto hfs = scan_halffaces(m, v);
+    std::vector<std::size_t> group(hfs.size());
+    for (std::size_t i = 0; i < hfs.size(); ++i) group[i] = i;
+    auto root = [&](std::size_t i) {
+        while (group[i] != i) i = group[i];
+        return i;
+    };
+    for (std::size_t i = 0; i < hfs.size(); ++i)
+        for (std::size_t j = 0; j < i; ++j)
+            if (Mesh::face(hfs[i]) == Mesh::face(hfs[j]) || (m.cell(hfs[i]).is_valid() && m.cell(hfs[i]) == m.cell(hfs[j])))
+                group[root(i)] = root(j);
+    for (std::size_t i = 0; i < hfs.size(); ++i)
+        if (root(i) != root(0)) return false;
+    return true;
+}
+
+// The mesh in each configuration answers as the stored one: prev, mate, the half-faces around each vertex (the
+// cache, or the walk where it finds them all) and the radial walk around each alive edge.
+void check_configs(const Mesh& m, const std::string& what) {
+    for_each_config(m, [&](const auto& x, const char* config) {
+        INFO("input: " << what << ", configuration " << std::string(config));
+        for (HalfEdge h : m.halfedges()) {
+            if (m.is_deleted(h)) continue;
+            REQUIRE_MESSAGE(x.prev(h) == m.prev(h), h << ": prev " << x.prev(h) << ", stored " << m.prev(h));
+            REQUIRE_MESSAGE(x.mate(h) == m.mate(h), h << ": mate " << x.mate(h) << ", stored " << m.mate(h));
+        }
+        const bool cached = std::decay_t<decltype(x)>::traits::vertex_cache;
+        std::vector<bool> whole(m.n_vertices());
+        for (Vertex v : m.vertices()) {
+            whole[v.idx] = !m.is_deleted(v) && (cached || walk_finds_all(m, v));
+            if (whole[v.idx])
+                REQUIRE_MESSAGE(x.vertex_halffaces(v) == scan_halffaces(m, v),
+                                v << ": half-faces around it " << list(x.vertex_halffaces(v)) << ", alive ones there "
+                                  << list(scan_halffaces(m, v)));
+        }
+        for (Edge e : m.edges())
+            if (!m.is_deleted(e) && whole[m.edge_vertices(e)[1].idx])
+                REQUIRE_MESSAGE(radial_cells(x, e) == radial_cells(m, e), e << ": the cells around it "
+                                                                            << list(radial_cells(x, e)) << ", stored "
+                                                                            << list(radial_cells(m, e)));
+    });
+}
 }  // namespace
 
 TEST_SUITE("Task 3: deletion and garbage collection") {
@@ -73,6 +119,8 @@ TEST_SUITE("Task 3: deletion and garbage collection") {
                                                    << ", alive half-faces there " << list(expected));
             }
         }
+        // every configuration of the result: the walk around each vertex (no cache) finds the same half-faces
+        check_configs(m, "tet grid 3 after deleting c5, c17, c40, c41, c100");
     }
 
     TEST_CASE("delete_vertex: removes the vertex / its cells and its edges" * geolab::points(2) *
@@ -117,6 +165,7 @@ TEST_SUITE("Task 3: deletion and garbage collection") {
         const Remap r = garbage_collection(m);
         require_valid(m, "tet grid 3 after garbage collection");
         CHECK_MESSAGE(!m.has_garbage(), "elements marked deleted remain after garbage collection");
+        check_configs(m, "tet grid 3 after garbage collection");
         auto check_map = [&](const std::vector<std::uint32_t>& map, std::size_t n, auto is_alive, const char* kind) {
             REQUIRE_MESSAGE(map.size() == n, kind << " map: one entry per old element expected (" << n << "), got " << map.size());
             std::uint32_t next = 0;

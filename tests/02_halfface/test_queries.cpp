@@ -62,6 +62,15 @@ TEST_SUITE("Task 2: queries") {
             CHECK_MESSAGE(out == expected, "boundary half-faces: expected " << list(expected) << ", got " << list(out));
             CHECK_MESSAGE(out.size() == r.boundary_faces, "expected " << r.boundary_faces << " boundary faces");
         }
+        // after deleting cells (through the kernel): some first sides 2f lose their cell
+        Mesh m = stored_mesh("tet grid 3");
+        for (std::uint32_t c : {0u, 1u, 2u, 40u, 77u, 78u, 161u}) kernel_delete_cell(m, Cell{c});
+        boundary_halffaces(m, out);
+        std::vector<HalfFace> expected;
+        for (HalfFace hf : m.halffaces())
+            if (!m.is_deleted(hf) && !m.cell(hf).is_valid()) expected.push_back(hf);
+        CHECK_MESSAGE(out == expected, "tet grid 3 without cells 0, 1, 2, 40, 77, 78, 161: boundary half-faces expected "
+                                           << list(expected) << ", got " << list(out));
     }
 
     TEST_CASE("queries: cell_vertices lists each corner once in order of first appearance" * geolab::points(3) *
@@ -100,6 +109,15 @@ TEST_SUITE("Task 2: queries") {
                                                        << ", got " << list(out));
                 });
             }
+        }
+        // every cell deleted (through the kernel, as delete_cell's contract says): no edge has a cell, and the
+        // edges have no half-edge left
+        Mesh m = stored_mesh("two tets");
+        for (Cell c : m.cells()) kernel_delete_cell(m, c);
+        for (Edge e : m.edges()) {
+            out.assign(1, Cell{7});
+            edge_cells(m, e, out);
+            CHECK_MESSAGE(out.empty(), "two tets with both cells deleted: " << e << " has no cell, got " << list(out));
         }
     }
 

@@ -68,6 +68,11 @@ TEST_SUITE("Task 8: advanced") {
         const RationalCurve same{P, {2.5, 2.5, 2.5, 2.5, 2.5}};
         for (double t : {0.0, 0.3, 0.5, 1.0}) CHECK(close3(rational_point(same, t), ref_point(P, t), 1e-14, 4));
         CHECK_THROWS_AS(circle_arc(c, 1.0, 0.0, 4.0), std::invalid_argument);
+        CHECK_THROWS_AS(circle_arc(c, 1.0, 0.0, pi), std::invalid_argument);  // a1 − a0 = π: the tangents never meet
+        CHECK_THROWS_AS(circle_arc(c, 1.0, 0.5, 0.5), std::invalid_argument);
+        CHECK_THROWS_AS(circle_arc(c, 0.0, 0.0, 1.0), std::invalid_argument);
+        CHECK_THROWS_AS(circle_arc(c, -1.0, 0.0, 1.0), std::invalid_argument);
+        CHECK_THROWS_AS(circle_arc(c, std::numeric_limits<double>::infinity(), 0.0, 1.0), std::invalid_argument);
         CHECK_THROWS_AS(rational_point(RationalCurve{P, {1, 1}}, 0.5), std::invalid_argument);
         CHECK_THROWS_AS(rational_point(RationalCurve{P, {1, 1, 0, 1, 1}}, 0.5), std::invalid_argument);
     }
@@ -77,8 +82,9 @@ TEST_SUITE("Task 8: advanced") {
                            "(t_(i+p+1−r) − t_i). At the domain's end use the last non-empty span.")) {
         const BSpline uni{3, {0, 1, 2, 3, 4, 5, 6, 7}, {{0, 0, 0}, {6, 0, 0}, {6, 6, 0}, {0, 6, 6}}};
         const glm::dvec3 w3 = (uni.points[0] + 4.0 * uni.points[1] + uni.points[2]) / 6.0;
-        INFO("uniform cubic at t = 3: expected (P0 + 4P1 + P2)/6 = " << str(w3) << ", got " << str(de_boor(uni, 3)));
-        CHECK(close3(de_boor(uni, 3), w3, 1e-15, 10));
+        const glm::dvec3 g3 = de_boor(uni, 3);
+        INFO("uniform cubic at t = 3: expected (P0 + 4P1 + P2)/6 = " << str(w3) << ", got " << str(g3));
+        CHECK(close3(g3, w3, 1e-15, 10));
         CHECK(close3(de_boor(uni, 4), (uni.points[1] + 4.0 * uni.points[2] + uni.points[3]) / 6.0, 1e-15, 10));
         Rng rng(51);
         for (int p = 1; p <= 5; ++p) {
@@ -88,22 +94,29 @@ TEST_SUITE("Task 8: advanced") {
             for (int i = 0; i <= p; ++i) bz.knots.push_back(0);
             for (int i = 0; i <= p; ++i) bz.knots.push_back(1);
             for (double t : {0.0, 0.25, 0.6, 1.0}) {
+                const glm::dvec3 got = de_boor(bz, t);
                 INFO("clamped degree " << p << " at t = " << t << ": expected the Bézier point " << str(ref_point(bz.points, t))
-                                       << ", got " << str(de_boor(bz, t)));
-                CHECK(close3(de_boor(bz, t), ref_point(bz.points, t), 1e-14, 4));
+                                       << ", got " << str(got));
+                CHECK(close3(got, ref_point(bz.points, t), 1e-14, 4));
             }
             for (int rep = 0; rep < 4; ++rep) {
                 const BSpline s = random_bspline(rng, p, p + 1 + rep);
                 const double lo = s.knots[p], hi = s.knots[s.points.size()];
                 for (int k = 0; k <= 10; ++k) {
                     const double t = lo + (hi - lo) * k / 10.0;
+                    const glm::dvec3 got = de_boor(s, t);
                     INFO("degree " << p << ", knots " << s.knots.size() << ", t = " << num(t) << ": expected "
-                                   << str(ref_bspline(s, t)) << ", got " << str(de_boor(s, t)));
-                    CHECK(close3(de_boor(s, t), ref_bspline(s, t), 1e-12, 4));
+                                   << str(ref_bspline(s, t)) << ", got " << str(got));
+                    CHECK(close3(got, ref_bspline(s, t), 1e-12, 4));
                 }
             }
         }
         CHECK_THROWS_AS(de_boor(uni, 2.5), std::invalid_argument);
+        CHECK_THROWS_AS(de_boor(uni, 4.5), std::invalid_argument);  // the domain is [t_3, t_4] = [3, 4]
+        CHECK_THROWS_AS(de_boor(uni, 4.000000000000001), std::invalid_argument);
+        CHECK_THROWS_AS(de_boor(BSpline{3, {1, 0, 2, 3, 4, 5, 6, 7}, uni.points}, 3.5), std::invalid_argument);
+        // degree 1 with knots 0, 1, 1, 2: the domain [t_1, t_2] = [1, 1] is empty
+        CHECK_THROWS_AS(de_boor(BSpline{1, {0, 1, 1, 2}, {{0, 0, 0}, {1, 0, 0}}}, 1.0), std::invalid_argument);
         CHECK_THROWS_AS(de_boor(BSpline{0, {0, 1, 2, 3, 4}, uni.points}, 1.5), std::invalid_argument);
         CHECK_THROWS_AS(de_boor(BSpline{3, {std::nan(""), 1, 2, 3, 4, 5, 6, 7}, uni.points}, 3), std::invalid_argument);
         CHECK_THROWS_AS(de_boor(BSpline{3, {0, 1, 2}, uni.points}, 3), std::invalid_argument);
@@ -119,6 +132,7 @@ TEST_SUITE("Task 8: advanced") {
                 const BSpline s = random_bspline(rng, p, p + 2 + rep);
                 const double lo = s.knots[p], hi = s.knots[s.points.size()];
                 const double tk = lo + (hi - lo) * rng.uniform(0, 0.999);
+                CHECK_THROWS_AS(insert_knot(s, hi), std::invalid_argument);  // inside the domain only
                 const BSpline r = insert_knot(s, tk);
                 REQUIRE(r.knots.size() == s.knots.size() + 1);
                 REQUIRE(r.points.size() == s.points.size() + 1);

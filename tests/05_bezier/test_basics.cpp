@@ -52,7 +52,7 @@ TEST_SUITE("Task 1: basics") {
         CHECK(q.y == 3.3125);
     }
 
-    TEST_CASE("de Casteljau: any degree in 2D and 3D; exact at dyadic t on dyadic points" * geolab::points(3) *
+    TEST_CASE("de Casteljau: any degree in 2D and 3D; exact at dyadic t on dyadic points" * geolab::points(2) *
               geolab::hint("n rounds for n + 1 points; P_k^r = (1 − t) P_k^(r−1) + t P_(k+1)^(r−1). Degree 0 is the "
                            "point itself. Empty input: std::invalid_argument.")) {
         Rng rng(1);
@@ -77,7 +77,7 @@ TEST_SUITE("Task 1: basics") {
     }
 
     TEST_CASE("de Casteljau triangle: row r has n + 1 − r points; each the (1 − t):t mix of the row above" *
-              geolab::points(3) *
+              geolab::points(2) *
               geolab::hint("Row 0 is P itself; row n is the single point C(t). Check your loop bounds: an "
                            "off-by-one leaves a row too long or a point unmixed.")) {
         Rng rng(2);

@@ -28,8 +28,9 @@ TEST_SUITE("Task 4: composite curves") {
         const std::vector<Poly3> segs{{{0, 0, 0}, {1, 0, 0}}, {{5, 5, 5}, {6, 6, 6}, {7, 5, 5}}, {{9, 9, 9}, {10, 8, 8}}};
         CHECK(evaluate_composite(segs, 0.0) == glm::dvec3(0, 0, 0));
         CHECK(evaluate_composite(segs, 0.5) == glm::dvec3(0.5, 0, 0));
-        INFO("u = 1 is segment 1 at t = 0: expected (5, 5, 5), got " << str(evaluate_composite(segs, 1.0)));
-        CHECK(evaluate_composite(segs, 1.0) == glm::dvec3(5, 5, 5));
+        const glm::dvec3 at1 = evaluate_composite(segs, 1.0);
+        INFO("u = 1 is segment 1 at t = 0: expected (5, 5, 5), got " << str(at1));
+        CHECK(at1 == glm::dvec3(5, 5, 5));
         CHECK(evaluate_composite(segs, 1.5) == glm::dvec3(6, 5.5, 5.5));
         CHECK(evaluate_composite(segs, 2.0) == glm::dvec3(9, 9, 9));
         CHECK(evaluate_composite(segs, 3.0) == glm::dvec3(10, 8, 8));
@@ -37,9 +38,16 @@ TEST_SUITE("Task 4: composite curves") {
         CHECK_THROWS_AS(evaluate_composite(segs, -0.1), std::invalid_argument);
         CHECK_THROWS_AS(evaluate_composite(segs, 3.1), std::invalid_argument);
         CHECK_THROWS_AS(evaluate_composite({}, 0.0), std::invalid_argument);
+        // an empty segment anywhere (first, middle, last) is an error, whichever segment u falls in
+        for (std::size_t e = 0; e < segs.size(); ++e) {
+            std::vector<Poly3> bad = segs;
+            bad[e].clear();
+            INFO("segment " << e << " empty");
+            CHECK_THROWS_AS(evaluate_composite(bad, 2.5), std::invalid_argument);
+        }
     }
 
-    TEST_CASE("continuity classes: C⁰ only; G¹ but not C¹; C¹; G² but not C²; C²; C³; apart" * geolab::points(5) *
+    TEST_CASE("continuity classes: C⁰ only; G¹ but not C¹; C¹; G² but not C²; C²; C³; apart" * geolab::points(4) *
               geolab::hint("Cᵏ: derivatives 0..k equal. Gᵏ (lecture): Cᵏ⁻¹ plus k-th derivatives parallel in the same "
                            "direction. G¹ is NOT C¹: a tangent of another length is still G¹ (handout §5).")) {
         struct Case {
@@ -72,6 +80,16 @@ TEST_SUITE("Task 4: composite curves") {
         CHECK(c3.c_order == 3);
         CHECK(c3.g_order == 3);
         CHECK_THROWS_AS(continuity(A, {}, 1e-9), std::invalid_argument);
+        // ends apart although the end points are parallel as vectors (a at (1, 1, 0), b from (2, 2, 0)): not G0
+        const Continuity ap = continuity({{0, 0, 0}, {1, 1, 0}}, {{2, 2, 0}, {3, 0, 0}}, 1e-9);
+        INFO("a ends at (1, 1, 0), b starts at (2, 2, 0): expected C-1 / G-1, got " << str(ap));
+        CHECK(ap.c_order == -1);
+        CHECK(ap.g_order == -1);
+        // a G1 joint with short tangents ((0.1, 0, 0) and (0.4, 0, 0): lengths below 1) is still G1
+        const Continuity gs = continuity({{0, 0, 0}, {0.1, 0, 0}}, {{0.1, 0, 0}, {0.3, 0, 0}, {0.4, 0.1, 0}}, 1e-12);
+        INFO("short tangents (0.1, 0, 0) and (0.4, 0, 0): expected C0 / G1, got " << str(gs));
+        CHECK(gs.c_order == 0);
+        CHECK(gs.g_order == 1);
     }
 
     TEST_CASE("continuity with different degrees and a tolerance" * geolab::points(2) *
@@ -100,6 +118,15 @@ TEST_SUITE("Task 4: composite curves") {
         CHECK(g0.c_order == 0);
         CHECK(g0.g_order == 1);
         CHECK_THROWS_AS(continuity(A, exact, -1.0), std::invalid_argument);
+        // the comparison is |x − y| ≤ tol (1 + the LARGER length): ends near the origin 1.5e-6 apart are not a joint
+        // at tol 1e-6 (the bound is 1e-6 (1 + ~0)); end points of lengths 1 and 3 (2 apart) are one at tol 0.6
+        // (0.6 (1 + 3) = 2.4) and would not be with the smaller length (0.6 (1 + 1) = 1.2)
+        const Continuity gap = continuity({{1, 1, 0}, {0, 0, 0}}, {{1.5e-6, 0, 0}, {1, 0, 0}}, 1e-6);
+        INFO("ends 1.5e-6 apart at the origin, tol 1e-6: expected C-1, got " << str(gap));
+        CHECK(gap.c_order == -1);
+        const Continuity big_tol = continuity({{0, 0, 0}, {1, 0, 0}}, {{3, 0, 0}, {4, 0, 0}}, 0.6);
+        INFO("ends (1, 0, 0) and (3, 0, 0) at tol 0.6: expected C0 or more, got " << str(big_tol));
+        CHECK(big_tol.c_order >= 0);
         // the tolerance is relative to the vectors' lengths: a C1 join at scale 1e6 off by 1e-7 is C1 at tol 1e-12
         Poly3 big = A, bigb = exact;
         for (auto& p : big) p *= 1e6;
@@ -133,7 +160,14 @@ TEST_SUITE("Task 4: composite curves") {
                 CHECK(std::abs(glm::length(g1[1] - g1[0]) - glm::length(b[1] - b[0])) <= 1e-12 * (1 + scale_of(b)));
                 for (int k = 2; k <= m; ++k) CHECK(g1[k] == b[k]);
             }
-        CHECK_THROWS_AS(join_c1(Poly3{{0, 0, 0}}, A), std::invalid_argument);
+        CHECK_THROWS_AS(join_c1(Poly3{{1, 2, 3}}, A), std::invalid_argument);
+        CHECK_THROWS_AS(join_c1(A, Poly3{{1, 2, 3}}), std::invalid_argument);
+        CHECK_THROWS_AS(join_g1(Poly3{{1, 2, 3}}, A), std::invalid_argument);
+        CHECK_THROWS_AS(join_g1(A, Poly3{{1, 2, 3}}), std::invalid_argument);
         CHECK_THROWS_AS(join_g1(Poly3{{1, 1, 1}, {1, 1, 1}}, A), std::invalid_argument);
+        CHECK_THROWS_AS(join_g1(A, Poly3{{1, 1, 1}, {1, 1, 1}, {2, 0, 0}}), std::invalid_argument);  // b_1 = b_0
+        // a first leg of length exactly 1 is a length like any other
+        const Poly3 g_unit = join_g1(Poly3{{0, 0, 0}, {2, 0, 0}}, Poly3{{5, 5, 5}, {5, 6, 5}, {7, 7, 7}});
+        CHECK(glm::length(g_unit[1] - g_unit[0]) == 1.0);
     }
 }

@@ -19,8 +19,9 @@ TEST_SUITE("Task 7: glyphs") {
                            "cross products of its control points (handout §8). Counter-clockwise is positive.")) {
         const std::vector<QuadSegment> square{line({0, 0}, {1, 0}), line({1, 0}, {1, 1}), line({1, 1}, {0, 1}),
                                               line({0, 1}, {0, 0})};
-        INFO("unit square, counter-clockwise: expected 1, got " << num(contour_area(square)));
-        CHECK(contour_area(square) == 1.0);
+        const double a_sq = contour_area(square);
+        INFO("unit square, counter-clockwise: expected 1, got " << num(a_sq));
+        CHECK(a_sq == 1.0);
         CHECK(contour_area(reversed(square)) == -1.0);
         // the parabolic arch (0,0) (1,2) (2,0) over its chord: area 2/3 · base 2 · height 1, clockwise
         const std::vector<QuadSegment> arch{{glm::dvec2(0, 0), glm::dvec2(1, 2), glm::dvec2(2, 0)}, line({2, 0}, {0, 0})};
@@ -66,6 +67,12 @@ TEST_SUITE("Task 7: glyphs") {
                 }
             }
         }
+        // straight segments need one step each: the polygon is the corners
+        const std::vector<QuadSegment> square{line({0, 0}, {1, 0}), line({1, 0}, {1, 1}), line({1, 1}, {0, 1}),
+                                              line({0, 1}, {0, 0})};
+        const Poly2 sq = flatten_contour(square, 0.01);
+        INFO("unit square of straight segments at tol 0.01: expected its 4 corners, got " << str(sq));
+        CHECK(sq == Poly2{{0, 0}, {1, 0}, {1, 1}, {0, 1}});
         CHECK_THROWS_AS(flatten_contour({}, 1.0), std::invalid_argument);
         CHECK_THROWS_AS(flatten_contour(glyph(U'S').contours[0], 0.0), std::invalid_argument);
     }

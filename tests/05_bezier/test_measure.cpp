@@ -1,21 +1,11 @@
 // Lab 05, Task 3: arc length and its inverse, the tight bounding box, the closest point. Expected values: closed
-// forms, composite Simpson and dense sampling refined by golden-section search, all in long double.
+// forms, composite Simpson (split at a cusp), the contract's adaptive rule and dense sampling refined by
+// golden-section search, all in long double (helpers.hpp).
 #include "helpers.hpp"
 
 using namespace lab05;
 
 namespace {
-// ∫_a^b |C'(t)| dt by composite Simpson (4096 panels) in long double.
-LD ref_length(const Poly3& P, LD a, LD b) {
-    const int N = 2048;
-    const LD h = (b - a) / N;
-    LD s = 0;
-    for (int i = 0; i <= N; ++i) {
-        const LD w = (i == 0 || i == N) ? 1 : (i % 2 ? 4 : 2);
-        s += w * norm(ref_deriv(P, a + i * h, 1));
-    }
-    return s * h / 3;
-}
 // Extremes of coordinate `axis` over [0, 1]: dense sampling then golden-section refinement (long double).
 LD ref_extreme(const Poly3& P, int axis, bool max) {
     auto f = [&](LD t) {
@@ -37,6 +27,16 @@ LD ref_extreme(const Poly3& P, int axis, bool max) {
     const LD v = std::min({f(a), f(b), bv});
     return max ? -v : v;
 }
+// Cubics with a cusp at a parameter that is not a split point of the halving (their speed has a kink there).
+struct Cusp {
+    double t0;
+    Poly3 P;
+};
+std::vector<Cusp> cusps() {
+    return {{1.0 / 3.0, cusp_cubic(1.0 / 3.0, {6, -3, 1.5}, {-9, 12, 3})},
+            {0.7, cusp_cubic(0.7, {-2, 5, 0}, {4, -1, 2}, {1, 1, 1})},
+            {0.15, cusp_cubic(0.15, {3, 3, -3}, {-1, 7, 2})}};
+}
 }  // namespace
 
 TEST_SUITE("Task 3: measures") {
@@ -45,8 +45,9 @@ TEST_SUITE("Task 3: measures") {
               geolab::hint("Integrate |C'| by Gauss–Legendre mapped to [a, b]; halve intervals where the 5- and "
                            "10-point rules disagree by more than their share of tol (handout §4).")) {
         const Poly3 line{{0, 0, 0}, {3, 0, 0}, {3, 0, 0}, {4, 0, 0}};  // x(t) non-uniform but monotone: length 4
-        INFO("straight cubic " << str(line) << ": expected length 4, got " << num(arc_length(line, 0, 1, 1e-12)));
-        CHECK(std::abs(arc_length(line, 0, 1, 1e-12) - 4) <= 2e-12);
+        const double l4 = arc_length(line, 0, 1, 1e-12);
+        INFO("straight cubic " << str(line) << ": expected length 4, got " << num(l4));
+        CHECK(std::abs(l4 - 4) <= 2e-12);
         const Poly3 parabola{{-1, 1, 0}, {0, -1, 0}, {1, 1, 0}};
         const double want = std::sqrt(5.0) + 0.5 * std::asinh(2.0);
         const double got = arc_length(parabola, 0, 1, 1e-12);
@@ -64,11 +65,62 @@ TEST_SUITE("Task 3: measures") {
                                << ": expected " << num(w) << ", got " << num(g));
                 CHECK(std::abs(g - w) <= tol + 1e-12 * w);
             }
+        // a cusp: |C'| has a kink, where the 5- and 10-point rules disagree until the interval around it is small
+        for (const auto& c : cusps())
+            for (double tol : {1e-4, 1e-8, 1e-11}) {
+                const double w = double(ref_length_kinked(c.P, 0, 1, c.t0)), g = arc_length(c.P, 0, 1, tol);
+                INFO("cubic with a cusp at t = " << num(c.t0) << ", P = " << str(c.P) << ", tol " << tol
+                                                  << ": expected length " << num(w) << ", got " << num(g));
+                CHECK(std::abs(g - w) <= tol + 1e-13 * w);
+            }
         // a tolerance below rounding still ends (at rounding accuracy)
         CHECK(std::abs(arc_length(parabola, 0, 1, 1e-300) - want) <= 1e-12);
         CHECK_THROWS_AS(arc_length(parabola, 0, 1, 0), std::invalid_argument);
         CHECK_THROWS_AS(arc_length(parabola, 0.5, 0.25, 1e-6), std::invalid_argument);
         CHECK_THROWS_AS(arc_length(parabola, 0, 1.5, 1e-6), std::invalid_argument);
+    }
+
+    TEST_CASE("arc length: the contract's rule (cut at the speed's stationary points; shares of tol); tol below "
+              "rounding; |C'| not finite" *
+              geolab::points(2) *
+              geolab::hint("Cut [a, b] at the roots of C' · C'' (the speed's extremes; a cusp is one). On each piece keep "
+                           "an interval when its 5- and 10-point values differ by at most tol · (its length) / (b − a); "
+                           "otherwise halve it. Refuse a hodograph point whose length is not finite (handout §4).")) {
+        // The sum of the kept 10-point values, computed in long double by the test (its own Gauss–Legendre nodes
+        // and stationary points): another share of tol, no halving, or halving too far keeps other intervals.
+        std::vector<Poly3> curves;
+        for (const auto& c : cusps()) curves.push_back(c.P);
+        Rng rng(24);
+        for (int k = 0; k < 4; ++k) curves.push_back(rng.poly(5, 2));
+        for (const auto& P : curves)
+            for (double tol : {1e-3, 1e-4})
+                for (auto [a, b] : {std::pair{0.0, 1.0}, {0.1, 0.9}, {0.25, 0.5}}) {
+                    const AdaptiveLength want = adaptive_length(P, a, b, tol);
+                    REQUIRE(want.margin > 1e-6);  // the test's input: no interval is near a tie
+                    const double got = arc_length(P, a, b, tol);
+                    INFO("P = " << str(P) << ", [" << a << ", " << b << "], tol " << tol << ": the rule keeps "
+                                << want.leaves << " intervals and gives " << num(double(want.value)) << "; got "
+                                << num(got));
+                    CHECK(std::abs(got - double(want.value)) <= 1e-11 * double(want.value));
+                }
+        // tol below rounding: T = 1e-14 (b − a) max |n ΔP_k| ends the halving; small, unit and large scales, short
+        // intervals around a cusp
+        for (double scale : {1e-3, 1.0, 1e6})
+            for (const auto& c : cusps())
+                for (auto [a, b] : {std::pair{0.0, 1.0}, {c.t0 - 1e-4, c.t0 + 3e-4}}) {
+                    Poly3 P = c.P;
+                    for (auto& p : P) p *= scale;
+                    const double w = double(ref_length_kinked(P, a, b, c.t0)), g = arc_length(P, a, b, 1e-300);
+                    INFO("cusp at t = " << num(c.t0) << " scaled by " << scale << ", [" << num(a) << ", " << num(b)
+                                        << "], tol 1e-300: expected " << num(w) << ", got " << num(g));
+                    CHECK(std::abs(g - w) <= 1e-12 * w);
+                }
+        const Poly3 huge{{-1e308, 0, 0}, {1e308, 0, 0}};  // C' = 2e308: overflows
+        CHECK_THROWS_AS(arc_length(huge, 0, 1, 1e-6), std::invalid_argument);
+        const Poly3 long_leg{{0, 0, 0}, {1e200, 1e200, 0}};  // C' finite, |C'| overflows (x² + y²)
+        CHECK_THROWS_AS(arc_length(long_leg, 0, 1, 1e-6), std::invalid_argument);
+        const Poly3 nan_point{{0, 0, 0}, {1, std::nan(""), 0}, {2, 0, 0}};
+        CHECK_THROWS_AS(arc_length(nan_point, 0, 1, 1e-6), std::invalid_argument);
     }
 
     TEST_CASE("parameter at length: the inverse of the arc length" * geolab::points(3) *
@@ -83,15 +135,41 @@ TEST_SUITE("Task 3: measures") {
             CHECK(std::abs(x - s) <= 1e-10);
         }
         Rng rng(21);
-        for (int n = 2; n <= 6; ++n) {
-            const Poly3 P = rng.poly(n, 2);
-            const double total = double(ref_length(P, 0, 1));
-            for (double f : {0.1, 0.37, 0.5, 0.9}) {
-                const double t = parameter_at_length(P, f * total, 1e-10);
-                const double len = double(ref_length(P, 0, t));
-                INFO("degree " << n << ", P = " << str(P) << ", s = " << num(f * total) << ": got t = " << num(t)
-                               << " whose length is " << num(len));
-                CHECK(std::abs(len - f * total) <= 1e-8 * (1 + total));
+        for (int n = 1; n <= 6; ++n)
+            for (double tol : {1e-3, 1e-10}) {
+                const Poly3 P = rng.poly(n, 2);
+                const double total = double(ref_length(P, 0, 1));
+                for (double f : {0.0, 0.1, 0.37, 0.5, 0.9, 1.0}) {
+                    const double t = parameter_at_length(P, f * total, tol);
+                    const double len = double(ref_length(P, 0, t));
+                    INFO("degree " << n << ", P = " << str(P) << ", s = " << num(f * total) << ", tol " << tol
+                                   << ": got t = " << num(t) << " whose length is " << num(len));
+                    CHECK(std::abs(len - f * total) <= tol + 1e-13 * total);
+                }
+            }
+        // through a cusp (the speed is 0 there)
+        for (const auto& c : cusps()) {
+            const double total = double(ref_length_kinked(c.P, 0, 1, c.t0));
+            for (double f : {0.2, 0.5, 0.8}) {
+                const double t = parameter_at_length(c.P, f * total, 1e-9);
+                const double len = double(ref_length_kinked(c.P, 0, t, c.t0));
+                INFO("cusp at t = " << num(c.t0) << ", s = " << num(f * total) << ": got t = " << num(t)
+                                    << " whose length is " << num(len));
+                CHECK(std::abs(len - f * total) <= 1e-9 + 1e-13 * total);
+            }
+        }
+        // a tol below what the lengths resolve (1e-300 on curves about 1e6 long) still ends, with t as good as
+        // doubles allow (the bracket closes on one side or the other)
+        for (int k = 0; k < 3; ++k) {
+            Poly3 big = rng.poly(4, 1);
+            for (auto& p : big) p *= 1e6;
+            const double big_total = double(ref_length(big, 0, 1));
+            for (double f : {0.1, 0.4, 0.55, 0.7, 0.85}) {
+                const double tb = parameter_at_length(big, f * big_total, 1e-300);
+                const double lb = double(ref_length(big, 0, tb));
+                INFO("curve of length " << num(big_total) << ", s = " << num(f * big_total) << ", tol 1e-300: got t = "
+                                        << num(tb) << " whose length is " << num(lb));
+                CHECK(std::abs(lb - f * big_total) <= 1e-12 * big_total);
             }
         }
         CHECK_THROWS_AS(parameter_at_length(line, -1, 1e-9), std::invalid_argument);
@@ -126,6 +204,18 @@ TEST_SUITE("Task 3: measures") {
                     CHECK(g.hi[axis] <= chi[axis]);
                 }
             }
+        // a single point; an x coordinate with a double root of x' (x(t) = (t − 1/3)³ + 1: monotone, its box from the
+        // ends; only noise changes the sign of x' near 1/3)
+        const Box pt = bounding_box(Poly3{{1.5, -2, 3}});
+        CHECK(pt.lo == glm::dvec3(1.5, -2, 3));
+        CHECK(pt.hi == glm::dvec3(1.5, -2, 3));
+        const Poly3 flat_x = cusp_cubic(1.0 / 3.0, {-1.0 / 3.0, 0, 0}, {1, 0, 0}, {0, 1, 0});  // x' = (t − 1/3)², y = 1
+        const Box fx = bounding_box(flat_x);
+        INFO("x' = (t − 1/3)² (a double root), P = " << str(flat_x) << ": expected x in [" << num(flat_x[0].x) << ", "
+                                                       << num(flat_x[3].x) << "], got [" << num(fx.lo.x) << ", "
+                                                       << num(fx.hi.x) << "]");
+        CHECK(std::abs(fx.lo.x - flat_x[0].x) <= 1e-15);
+        CHECK(std::abs(fx.hi.x - flat_x[3].x) <= 1e-15);
         CHECK_THROWS_AS(bounding_box(Poly3{}), std::invalid_argument);
     }
 
@@ -143,8 +233,25 @@ TEST_SUITE("Task 3: measures") {
         CHECK(c1.point == glm::dvec3(1, 1, 0));
         const Closest c2 = closest_point(parabola, {-2, 1.5, 0});
         CHECK(c2.t == 0.0);
+        // equally near ends (an arch y = 1 − x² seen from straight below): the smallest t
+        const Poly3 arch{{-1, 0, 0}, {0, 2, 0}, {1, 0, 0}};
+        const Closest ce = closest_point(arch, {0, -5, 0});
+        INFO("arch y = 1 − x², q = (0, −5, 0): both ends at distance √26; expected t = 0, got t = " << num(ce.t));
+        CHECK(ce.t == 0.0);
+        CHECK(std::abs(ce.distance - std::sqrt(26.0)) <= 1e-15 * 6);
+        // a single point; q on the curve; q at the vertex's centre of curvature (a multiple root of (C − q)·C')
+        const Closest cp = closest_point(Poly3{{1, 2, 3}}, {4, 6, 3});
+        CHECK(cp.t == 0.0);
+        CHECK(cp.distance == 5.0);
+        const Closest on = closest_point(parabola, {0.25, 0.0625, 0});  // C(5/8) = (1/4, 1/16, 0)
+        INFO("q = C(5/8) on the parabola: expected distance 0 at t = 0.625, got " << num(on.distance) << " at t = "
+                                                                                  << num(on.t));
+        CHECK(on.distance <= 1e-9);
+        CHECK(std::abs(on.t - 0.625) <= 1e-9);
+        const Closest cc = closest_point(parabola, {0, 0.5, 0});  // the centre of curvature of the vertex
+        CHECK(std::abs(cc.distance - 0.5) <= 1e-12);
         Rng rng(23);
-        for (int n = 2; n <= 7; ++n)
+        for (int n = 1; n <= 7; ++n)
             for (int rep = 0; rep < 6; ++rep) {
                 const Poly3 P = rng.poly(n);
                 const glm::dvec3 q{rng.uniform(-5, 5), rng.uniform(-5, 5), rng.uniform(-5, 5)};

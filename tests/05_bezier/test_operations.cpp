@@ -30,6 +30,7 @@ TEST_SUITE("Task 2: operations") {
                 }
             }
         CHECK_THROWS_AS(subdivide(Poly3{}, 0.5), std::invalid_argument);
+        CHECK_THROWS_AS(subdivide(rng.poly(2), std::nan("")), std::invalid_argument);
     }
 
     TEST_CASE("restrict_to: C on (a; b) reparametrised to (0; 1); a > b reverses" * geolab::points(2) *
@@ -51,6 +52,11 @@ TEST_SUITE("Task 2: operations") {
                 }
             }
         CHECK_THROWS_AS(restrict_to(rng.poly(3), 0.5, 0.5), std::invalid_argument);
+        // the error names restrict_to (the header: errors name the function), whatever it calls
+        CHECK_THROWS_WITH_AS(restrict_to(rng.poly(3), 0.25, std::nan("")), doctest::Contains("restrict_to"),
+                             std::invalid_argument);
+        CHECK_THROWS_WITH_AS(restrict_to(rng.poly(3), std::numeric_limits<double>::infinity(), 0.5),
+                             doctest::Contains("restrict_to"), std::invalid_argument);
     }
 
     TEST_CASE("hodograph: n (P_(k+1) − P_k); and C'(t) from it" * geolab::points(3) *
@@ -77,7 +83,7 @@ TEST_SUITE("Task 2: operations") {
         CHECK_THROWS_AS(hodograph(Poly3{}), std::invalid_argument);
     }
 
-    TEST_CASE("second derivative: C''(t) = n (n − 1) Σ Δ²P_k B_k^(n−2)(t)" * geolab::points(2) *
+    TEST_CASE("second derivative: C''(t) = n (n − 1) Σ Δ²P_k B_k^(n−2)(t)" * geolab::points(1) *
               geolab::hint("The hodograph of the hodograph. A line (n = 1) has C'' = 0.")) {
         Rng rng(13);
         for (int n = 1; n <= 9; ++n)
@@ -89,7 +95,7 @@ TEST_SUITE("Task 2: operations") {
             }
     }
 
-    TEST_CASE("elevate: one more control point; the same curve; known points" * geolab::points(3) *
+    TEST_CASE("elevate: one more control point; the same curve; known points" * geolab::points(2) *
               geolab::hint("Q_k = (k/(n+1)) P_(k−1) + (1 − k/(n+1)) P_k; the ends stay (handout §3).")) {
         const Poly3 quad{{0, 0, 0}, {3, 3, 0}, {6, 0, 0}};
         const Poly3 e = elevate(quad);
@@ -118,9 +124,9 @@ TEST_SUITE("Task 2: operations") {
                            "/ |C'|³: positive turning left.")) {
         // y = x² on [−1, 1]: κ = 2 at the vertex, turning left
         const Poly2 parabola{{-1, 1}, {0, -1}, {1, 1}};
-        INFO("parabola y = x² " << str(parabola) << " at t = 1/2: signed curvature expected 2, got "
-                                << signed_curvature(parabola, 0.5));
-        CHECK(std::abs(signed_curvature(parabola, 0.5) - 2) <= 1e-14);
+        const double k_vertex = signed_curvature(parabola, 0.5);
+        INFO("parabola y = x² " << str(parabola) << " at t = 1/2: signed curvature expected 2, got " << num(k_vertex));
+        CHECK(std::abs(k_vertex - 2) <= 1e-14);
         CHECK(std::abs(curvature(lift(parabola), 0.5) - 2) <= 1e-14);
         CHECK(torsion(lift(parabola), 0.5) == 0.0);
         const Poly2 rev{{1, 1}, {0, -1}, {-1, 1}};  // reversed: turns right
@@ -134,10 +140,11 @@ TEST_SUITE("Task 2: operations") {
                 const V3L d1 = ref_deriv(P, t, 1), d2 = ref_deriv(P, t, 2), d3 = ref_deriv(P, t, 3);
                 const V3L c = cross(d1, d2);
                 const double k = double(norm(c) / std::pow(norm(d1), 3)), tau = double(dot(c, d3) / dot(c, c));
+                const double gk = curvature(P, t), gtau = torsion(P, t);
                 INFO("degree " << n << ", t = " << t << ", P = " << str(P) << ": κ expected " << num(k) << ", got "
-                               << num(curvature(P, t)) << "; τ expected " << num(tau) << ", got " << num(torsion(P, t)));
-                CHECK(std::abs(curvature(P, t) - k) <= 1e-10 * (1 + k));
-                CHECK(std::abs(torsion(P, t) - tau) <= 1e-9 * (1 + std::abs(tau)));
+                               << num(gk) << "; τ expected " << num(tau) << ", got " << num(gtau));
+                CHECK(std::abs(gk - k) <= 1e-10 * (1 + k));
+                CHECK(std::abs(gtau - tau) <= 1e-9 * (1 + std::abs(tau)));
                 Poly2 P2;
                 for (const auto& p : P) P2.emplace_back(p.x, p.y);
                 const LD sx = d1.x, sy = d1.y;
@@ -148,5 +155,17 @@ TEST_SUITE("Task 2: operations") {
         const Poly3 line{{0, 0, 0}, {1, 1, 1}, {3, 3, 3}};
         CHECK(curvature(line, 0.4) <= 1e-15);
         CHECK(torsion(line, 0.4) == 0.0);
+        // where C' = 0 (the cusp of (0,0) (2,2) (0,2) (2,0) at t = 1/2, exactly) all three are 0, not NaN
+        const Poly2 cusp{{0, 0}, {2, 2}, {0, 2}, {2, 0}};
+        const double kc = curvature(lift(cusp), 0.5), sc = signed_curvature(cusp, 0.5), tc = torsion(lift(cusp), 0.5);
+        INFO("cusp " << str(cusp) << " at t = 1/2 (C' = 0): expected κ = signed κ = τ = 0, got " << num(kc) << ", "
+                     << num(sc) << ", " << num(tc));
+        CHECK(kc == 0.0);
+        CHECK(sc == 0.0);
+        CHECK(tc == 0.0);
+        // |C'| = 1 exactly: (0,0) (1/2,0) (1,1) at t = 0 has C' = (1, 0), C'' = (0, 2): κ = 2, turning left
+        const Poly2 unit_speed{{0, 0}, {0.5, 0}, {1, 1}};
+        CHECK(signed_curvature(unit_speed, 0.0) == 2.0);
+        CHECK(curvature(lift(unit_speed), 0.0) == 2.0);
     }
 }

@@ -40,6 +40,10 @@ TEST_SUITE("Task 5: tensor-product patches") {
         BezierPatch bad = S;
         bad.points.pop_back();
         CHECK_THROWS_AS(patch_point(bad, 0.5, 0.5), std::invalid_argument);
+        const BezierPatch flat_v{1, 0, {{0, 0, 0}, {1, 0, 0}}};  // degree 0 in v (2 points: the count fits)
+        CHECK_THROWS_AS(patch_point(flat_v, 0.5, 0.5), std::invalid_argument);
+        CHECK_THROWS_AS(patch_du(flat_v, 0.5, 0.5), std::invalid_argument);
+        CHECK_THROWS_AS(patch_dv(flat_v, 0.5, 0.5), std::invalid_argument);
     }
 
     TEST_CASE("patch derivatives: S_u and S_v" * geolab::points(2) *
@@ -91,13 +95,10 @@ TEST_SUITE("Task 5: tensor-product patches") {
                               {"collapsed v = 0", &Cv0, 0.4, 0.0, 0.0, 1e-5},
                               {"collapsed v = 1", &Cv1, 0.6, 1.0, 0.0, -1e-5}};
         for (const auto& sd : sides) {
-            const glm::dvec3 n0 = patch_normal(*sd.S, sd.u, sd.v);
-            const V3L c = cross(ref_patch(*sd.S, sd.u + sd.du, sd.v + sd.dv, 1, 0),
-                                ref_patch(*sd.S, sd.u + sd.du, sd.v + sd.dv, 0, 1));
-            const glm::dvec3 near = D((1 / norm(c)) * c);
-            INFO(sd.name << ": normal at the edge " << str(n0) << ", just inside " << str(near));
+            const glm::dvec3 n0 = patch_normal(*sd.S, sd.u, sd.v), want = ref_normal(*sd.S, sd.u, sd.v);
+            INFO(sd.name << ": normal at the edge " << str(n0) << ", expected the limit from inside " << str(want));
             REQUIRE(std::isfinite(n0.x + n0.y + n0.z));
-            CHECK(glm::dot(n0, near) >= 0.999);
+            CHECK(close3(n0, want, 1e-9));
         }
         // a corner where S_u, S_v and S_uv all vanish (P00 = P01 = P10 = P11): the normal from just inside
         BezierPatch flat{3, 3, {}};
@@ -121,21 +122,161 @@ TEST_SUITE("Task 5: tensor-product patches") {
             CHECK(glm::dot(n1, D((1 / norm(c1)) * c1)) >= 0.99);
         }
         CHECK_THROWS_AS(patch_normal(BezierPatch{0, 1, {{0, 0, 0}, {1, 0, 0}}}, 0.5, 0.5), std::invalid_argument);
-        const BezierPatch C = cap();
-        for (double v : {0.0, 0.3, 0.5, 1.0}) {
-            const glm::dvec3 n0 = patch_normal(C, 0, v);
-            const V3L c = cross(ref_patch(C, 1e-5, v, 1, 0), ref_patch(C, 1e-5, v, 0, 1));
-            const glm::dvec3 near = D((1 / norm(c)) * c);
-            INFO("cap with a collapsed u = 0 edge, v = " << v << ": normal " << str(n0) << ", near the edge "
-                                                         << str(near));
-            REQUIRE(std::isfinite(n0.x));
-            CHECK(std::abs(glm::length(n0) - 1) <= 1e-12);
-            CHECK(glm::dot(n0, near) >= 0.999);
+        // the cap at scale 1 and 1/10 (a first-order term shorter than 1 is as good as any other)
+        for (double scale : {1.0, 0.1}) {
+            BezierPatch C = cap();
+            for (auto& p : C.points) p *= scale;
+            for (double v : {0.0, 0.3, 0.5, 0.75, 1.0}) {
+                const glm::dvec3 n0 = patch_normal(C, 0, v), want = ref_normal(C, 0, v);
+                INFO("cap (scale " << scale << ") with a collapsed u = 0 edge, v = " << v << ": normal " << str(n0)
+                                   << ", expected the limit from inside " << str(want));
+                REQUIRE(std::isfinite(n0.x));
+                CHECK(std::abs(glm::length(n0) - 1) <= 1e-12);
+                CHECK(close3(n0, want, 1e-9));
+            }
         }
     }
 
+    TEST_CASE("patch normal where S_u × S_v counts as 0: the threshold; the first-order term with S_uu and S_vv; "
+              "σ at ½; the 1e-6 step; a point patch" *
+              geolab::points(2) *
+              geolab::hint("|S_u × S_v| ≤ 1e-12 (|S_u| + |S_v|)² counts as 0. Then the direction of (σ_u S_uu + σ_v S_uv) × "
+                           "S_v + S_u × (σ_u S_uv + σ_v S_vv), σ = +1 for a parameter ≤ ½, else −1; if that is exactly 0, "
+                           "the normal at (u + σ_u 1e-6, v + σ_v 1e-6); if that is 0 too, (0, 0, 1) (handout §6).")) {
+        // The threshold: a bilinear patch with S_u = (1, 0, 0), S_v = (1, ε, 0) at (0, 0), so |S_u × S_v| = ε against
+        // 1e-12 (1 + 1)² = 4e-12, and S_uv = (0, 0, 5): above the threshold the normal is (0, 0, 1); at or below it
+        // the first-order term S_uv × S_v + S_u × S_uv = (−5ε, 0, 0) gives (−1, 0, 0).
+        for (auto [eps, want] : {std::pair{6e-12, glm::dvec3(0, 0, 1)}, {2e-12, glm::dvec3(-1, 0, 0)}}) {
+            const BezierPatch B{1, 1, {{0, 0, 0}, {1, eps, 0}, {1, 0, 0}, {2, eps, 5}}};
+            const glm::dvec3 got = patch_normal(B, 0, 0);
+            INFO("|S_u × S_v| = " << eps << " (threshold 4e-12): expected " << str(want) << ", got " << str(got));
+            CHECK(close3(got, want, 1e-12));
+        }
+        // A fold: S = (u + v, (2u − 1) v + v², u² + 2uv) has S_u = S_v = (1, 0, 1) at (½, 0). With σ = (+1, +1)
+        // (u = ½ counts as the lower half): (S_uu + S_uv) × S_v + S_u × (S_uv + S_vv) = (−2, 2, 2); the other side
+        // of the fold (σ_u = −1) would give (2, 2, −2). Transposed (u and v swapped) at (0, ½): the opposite normal.
+        auto fold = [](int a, int b) -> glm::dvec3 {
+            if (a == 1 && b == 0) return {1, 0, 0};
+            if (a == 0 && b == 1) return {1, -1, 0};
+            if (a == 1 && b == 1) return {0, 2, 2};
+            if (a == 0 && b == 2) return {0, 1, 0};
+            if (a == 2 && b == 0) return {0, 0, 1};
+            return {0, 0, 0};
+        };
+        const BezierPatch F = patch_from_power(2, 2, fold);
+        const BezierPatch Ft = patch_from_power(2, 2, [&](int a, int b) { return fold(b, a); });
+        const glm::dvec3 wf = glm::dvec3(-1, 1, 1) / std::sqrt(3.0);
+        const glm::dvec3 nf = patch_normal(F, 0.5, 0), nft = patch_normal(Ft, 0, 0.5);
+        INFO("fold at (½, 0): expected " << str(wf) << " (numerically " << str(ref_normal(F, 0.5, 0)) << "), got "
+                                         << str(nf) << "; transposed at (0, ½): expected " << str(-wf) << ", got " << str(nft));
+        CHECK(close3(nf, wf, 1e-12));
+        CHECK(close3(ref_normal(F, 0.5, 0), wf, 1e-9));  // the test's own limit agrees with the formula
+        CHECK(close3(nft, -wf, 1e-12));
+        // Corners where S_u ∥ S_v ≠ 0 (P_10 − P_00 = d, P_01 − P_00 = 2d, and likewise at the other corners) on a
+        // random bicubic: S_uu and S_vv enter the first-order term; σ points into the patch from each corner.
+        Rng rng(45);
+        for (int rep = 0; rep < 3; ++rep) {
+            BezierPatch S = random_patch(rng, 3, 3, 2);
+            for (auto& p : S.points) p = {std::round(p.x * 8) / 8, std::round(p.y * 8) / 8, std::round(p.z * 8) / 8};
+            const glm::dvec3 d{0.5, -0.25 + rep, 1};
+            auto P = [&](int i, int j) -> glm::dvec3& { return S.points[i * 4 + j]; };
+            P(1, 0) = P(0, 0) + d, P(0, 1) = P(0, 0) + 2.0 * d;        // corner (0, 0)
+            P(2, 0) = P(3, 0) - d, P(3, 1) = P(3, 0) + 2.0 * d;        // corner (1, 0)
+            P(1, 3) = P(0, 3) + 2.0 * d, P(0, 2) = P(0, 3) - d;        // corner (0, 1)
+            P(2, 3) = P(3, 3) - 2.0 * d, P(3, 2) = P(3, 3) - d;        // corner (1, 1)
+            for (auto [u, v] : {std::pair{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}, {1.0, 1.0}}) {
+                const glm::dvec3 got = patch_normal(S, u, v), want = ref_normal(S, u, v);
+                INFO("bicubic " << rep << ", corner (" << u << ", " << v << ") with S_u ∥ S_v: expected the limit "
+                                << str(want) << ", got " << str(got));
+                CHECK(close3(got, want, 1e-9));
+            }
+        }
+        // S_u = S_v = 0 at the corner (P_00 = P_01 = P_10): the first-order term is 0 too, so the normal at
+        // (1e-6, 1e-6) — exactly there, not at another small step
+        BezierPatch flat{3, 3, {}};
+        for (int i = 0; i <= 3; ++i)
+            for (int j = 0; j <= 3; ++j) flat.points.push_back({std::max(i, 1) - 1.0, std::max(j, 1) - 1.0, 0.1 * i * j});
+        const V3L c6 = cross(ref_patch(flat, 1e-6L, 1e-6L, 1, 0), ref_patch(flat, 1e-6L, 1e-6L, 0, 1));
+        const glm::dvec3 w6 = D((1 / norm(c6)) * c6), n6 = patch_normal(flat, 0, 0);
+        INFO("corner with S_u = S_v = 0: expected the normal at (1e-6, 1e-6) " << str(w6) << ", got " << str(n6));
+        CHECK(close3(n6, w6, 1e-8));
+        // a patch collapsed to a point: (0, 0, 1); to a line: some unit vector
+        const BezierPatch dot_patch{2, 1, std::vector<glm::dvec3>(6, glm::dvec3(1, -2, 3))};
+        CHECK(patch_normal(dot_patch, 0.3, 0.7) == glm::dvec3(0, 0, 1));
+        BezierPatch line_patch{2, 2, {}};
+        for (int i = 0; i <= 2; ++i)
+            for (int j = 0; j <= 2; ++j) line_patch.points.push_back(double(i + 2 * j) * glm::dvec3(1, 2, 3));
+        for (auto [u, v] : {std::pair{0.0, 0.0}, {0.5, 0.5}, {1.0, 0.25}}) {
+            const glm::dvec3 nl = patch_normal(line_patch, u, v);
+            INFO("patch collapsed to a line, (" << u << ", " << v << "): " << str(nl));
+            REQUIRE(std::isfinite(nl.x + nl.y + nl.z));
+            CHECK(std::abs(glm::length(nl) - 1) <= 1e-12);
+        }
+    }
+
+    TEST_CASE("tessellation: vertex order; the weld rule (earliest border vertex within weld_tol); collapsed edges" *
+              geolab::points(2) *
+              geolab::hint("Patches in order, samples i-major. A border sample within weld_tol (distance ≤ weld_tol) of "
+                           "an earlier border vertex IS the earliest such vertex; interior samples are always new. "
+                           "Drop a triangle with two equal vertices (handout §6).")) {
+        // the expected mesh, vertex by vertex and triangle by triangle, from an independent tessellation
+        auto check_mesh = [](const char* what, const std::vector<BezierPatch>& ps, int n, double tol, bool flip) {
+            const PatchMesh got = tessellate_patches(ps, n, tol, flip);
+            const std::string diff = compare_mesh(got, expected_tessellation(ps, n, tol, flip), ps, n, flip);
+            INFO(what << ", n = " << n << ", weld_tol " << tol << (flip ? ", flipped" : "") << ": " << diff);
+            CHECK(diff.empty());
+        };
+        auto square = [](double x0, double x1, double y0 = 0, double y1 = 1) {
+            return BezierPatch{1, 1, {{x0, y0, 0}, {x0, y1, 0}, {x1, y0, 0}, {x1, y1, 0}}};
+        };
+        // distance exactly weld_tol welds, on either side in x; a chain welds to the earliest vertex
+        check_mesh("unit square and one 0.25 to its right (weld_tol 0.25)", {square(0, 1), square(1.25, 2.25)}, 1, 0.25,
+                   false);
+        check_mesh("unit square and one 0.25 to its left", {square(0, 1), square(-1.25, -0.25)}, 1, 0.25, false);
+        check_mesh("chain: C's left corners within 0.25 of A's and of B's (A earlier)",
+                   {square(0, 1), square(1.375, 2.375), square(1.1875, 3)}, 1, 0.25, false);
+        check_mesh("the same, n = 2", {square(0, 1), square(1.375, 2.375), square(1.1875, 3)}, 2, 0.25, false);
+        // diagonal offsets: within weld_tol although x + y + z differs by more than weld_tol (√3 · 0.125 ≈ 0.217 ≤ 0.25
+        // with x + y + z 0.375 apart; √3 ≤ 2 with 3 apart); both directions
+        auto moved = [](BezierPatch S, const glm::dvec3& d) {
+            for (auto& p : S.points) p += d;
+            return S;
+        };
+        check_mesh("square and one moved by (1/8, 1/8, 1/8) past its right edge",
+                   {square(0, 1), moved(square(1, 2), {0.125, 0.125, 0.125})}, 1, 0.25, false);
+        check_mesh("square and one moved by (−1/8, −1/8, −1/8) past its left edge",
+                   {square(0, 1), moved(square(-1, 0), {-0.125, -0.125, -0.125})}, 2, 0.25, false);
+        check_mesh("large squares, offset (1, 1, 1), weld_tol 2",
+                   {square(0, 10, 0, 10), moved(square(10, 20, 0, 10), {1, 1, 1})}, 1, 2.0, false);
+        check_mesh("large squares, offset (−1, −1, −1), weld_tol 2",
+                   {square(0, 10, 0, 10), moved(square(-10, 0, 0, 10), {-1, -1, -1})}, 1, 2.0, false);
+        // interior samples are never welded (B's corner lies on A's centre sample)
+        check_mesh("B's corner on A's interior sample", {square(0, 2, 0, 2), square(1, 3, 1, 3)}, 2, 1e-9, false);
+        // weld_tol = 0 welds equal positions only
+        check_mesh("squares 1e-15 apart at weld_tol 0", {square(0, 1), square(1 + 1e-15, 2)}, 1, 0.0, false);
+        // collapsed edges on each side: one vertex, no triangle with a repeated vertex, the limit normal
+        BezierPatch Cu1{2, 3, {}}, Cv0{3, 2, {}}, Cv1{3, 2, {}};
+        const BezierPatch C0 = cap();
+        for (int i = 2; i >= 0; --i)
+            for (int j = 0; j <= 3; ++j) Cu1.points.push_back(C0.points[i * 4 + j]);
+        for (int j = 0; j <= 3; ++j)
+            for (int i = 0; i <= 2; ++i) Cv0.points.push_back(C0.points[i * 4 + j]);
+        for (int j = 0; j <= 3; ++j)
+            for (int i = 2; i >= 0; --i) Cv1.points.push_back(C0.points[i * 4 + j]);
+        check_mesh("cap collapsed at u = 0", {C0}, 4, 1e-9, false);
+        check_mesh("cap collapsed at u = 1", {Cu1}, 4, 1e-9, false);
+        check_mesh("cap collapsed at v = 0", {Cv0}, 4, 1e-9, true);
+        check_mesh("cap collapsed at v = 1", {Cv1}, 3, 1e-9, false);
+        check_mesh("all four caps", {C0, Cu1, Cv0, Cv1}, 2, 1e-9, true);
+        // a patch of degree 30 in u (the basis at high degree)
+        BezierPatch high{30, 1, {}};
+        for (int i = 0; i <= 30; ++i)
+            for (int j = 0; j <= 1; ++j) high.points.push_back({double(i), double(j), std::sin(i * 0.3)});
+        check_mesh("degree 30 × 1", {high}, 5, 1e-9, false);
+    }
+
     TEST_CASE("tessellation: (n + 1)² samples per patch; 2n² triangles turning like S_u × S_v; borders shared" *
-              geolab::points(3) *
+              geolab::points(2) *
               geolab::hint("Triangles (i,j)(i+1,j)(i+1,j+1) and (i,j)(i+1,j+1)(i,j+1); weld only border samples closer "
                            "than weld_tol; flip reverses triangles and normals.")) {
         Rng rng(43);

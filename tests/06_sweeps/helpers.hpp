@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <numbers>
 #include <random>
 #include <sstream>
@@ -16,6 +17,7 @@
 #include <glm/geometric.hpp>
 
 #include "geolab/grading/test.hpp"
+#include "geolab/predicates.hpp"
 #include "geolab/surface_checks.hpp"
 #include "geolab/sweeps.hpp"
 
@@ -98,6 +100,130 @@ inline Profile star_with_holes(Rng& rng, int n, int k) {
         p.holes.push_back(reversed(star(rng, rng.integer(3, 7), 0.15, 0.3, c)));
     }
     return p;
+}
+
+// The loop started at its k-th point (the same loop: the start is free).
+inline Loop rotated(Loop l, std::size_t k) {
+    std::rotate(l.begin(), l.begin() + static_cast<std::ptrdiff_t>(k % l.size()), l.end());
+    return l;
+}
+// The profile with every loop started at a random point.
+inline Profile rotated_loops(Rng& rng, Profile p) {
+    p.outer = rotated(p.outer, std::size_t(rng.integer(0, int(p.outer.size()) - 1)));
+    for (auto& h : p.holes) h = rotated(h, std::size_t(rng.integer(0, int(h.size()) - 1)));
+    return p;
+}
+// A loop with `extra` points inserted at random places along its edges (collinear points; integer coordinates stay
+// integers when the edge's length allows).
+inline Loop with_edge_points(Rng& rng, const Loop& l, int extra) {
+    Loop out;
+    for (std::size_t i = 0; i < l.size(); ++i) {
+        const glm::dvec2 a = l[i], b = l[(i + 1) % l.size()];
+        out.push_back(a);
+        const int steps = int(std::max(std::abs(b.x - a.x), std::abs(b.y - a.y)));
+        if (extra > 0 && steps >= 2 && rng.integer(0, 1)) {
+            const int k = rng.integer(1, steps - 1);
+            out.push_back(a + (b - a) * (double(k) / steps));
+            --extra;
+        }
+    }
+    return out;
+}
+// A profile on the integer grid, valid by construction, full of ties and collinear points: the outer loop is a
+// skyline over `cols` columns of width 4 (bottom y = 0, column c of height 4·hᶜ), with points added along its edges;
+// holes sit in 4×4 cells under the skyline, each a shape inside [4c + 1, 4c + 3] × [4r + 1, 4r + 3] (square, square
+// with edge points, diamond, triangle, L, or a thin bar), clockwise; cells side by side give holes with equal
+// rightmost x and vertices level with each other and with the outer loop's. Every loop starts at a random point.
+inline Profile grid_profile(Rng& rng, int cols, int max_height, int max_holes) {
+    std::vector<int> h(static_cast<std::size_t>(cols));
+    for (auto& v : h) v = rng.integer(1, max_height);
+    Loop outer{{0, 0}, {4.0 * cols, 0}};
+    for (int c = cols - 1; c >= 0; --c) {
+        const double x1 = 4.0 * (c + 1), x0 = 4.0 * c, y = 4.0 * h[std::size_t(c)];
+        if (outer.back() != glm::dvec2(x1, y)) {
+            if (outer.back().x != x1) outer.push_back({x1, outer.back().y});
+            outer.push_back({x1, y});
+        }
+        outer.push_back({x0, y});
+    }
+    // the loop ends at (0, 4·h₀) and joins (0, 0); drop straight corners made by equal neighbouring heights
+    Loop clean;
+    for (std::size_t i = 0; i < outer.size(); ++i) {
+        const glm::dvec2 a = outer[(i + outer.size() - 1) % outer.size()], b = outer[i], c = outer[(i + 1) % outer.size()];
+        if (b == a) continue;
+        if (geolab::orient2d(a, b, c) == 0 && glm::dot(b - a, c - b) > 0 && rng.integer(0, 2) > 0) continue;
+        clean.push_back(b);
+    }
+    Profile p{with_edge_points(rng, clean, rng.integer(0, 6)), {}};
+    std::vector<glm::ivec2> cells;
+    for (int c = 0; c < cols; ++c)
+        for (int r = 0; r < h[std::size_t(c)]; ++r) cells.push_back({c, r});
+    std::shuffle(cells.begin(), cells.end(), rng.gen);
+    const int k = std::min<int>(max_holes, int(cells.size()));
+    for (int i = 0; i < k; ++i) {
+        const glm::dvec2 o{4.0 * cells[std::size_t(i)].x + 1, 4.0 * cells[std::size_t(i)].y + 1};  // the cell's [o, o + 2]²
+        Loop s;
+        switch (rng.integer(0, 5)) {
+            case 0: s = {{0, 0}, {2, 0}, {2, 2}, {0, 2}}; break;
+            case 1: s = {{0, 0}, {1, 0}, {2, 0}, {2, 1}, {2, 2}, {1, 2}, {0, 2}, {0, 1}}; break;
+            case 2: s = {{1, 0}, {2, 1}, {1, 2}, {0, 1}}; break;
+            case 3: s = {{0, 0}, {2, 1}, {0, 2}}; break;
+            case 4: s = {{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}}; break;
+            default: s = {{0, 1}, {2, 1}, {2, 1.5}, {0, 1.5}}; break;
+        }
+        p.holes.push_back(reversed(shifted(s, o)));
+    }
+    return rotated_loops(rng, p);
+}
+
+// Everything wrong with a triangulation of p (empty when it is right). Exact: each triangle counter-clockwise
+// (orient2d > 0), each loop edge a→b (region on its left) used by exactly one triangle as a→b and by none as b→a,
+// every other directed edge used once and its reverse once. Then the triangles cover the region exactly once
+// and nothing else (each point's count of triangles is the loops' winding number about it), whatever the choice
+// of bridges and ears. Also the count n + 2h − 2.
+inline std::string triangulation_problem(const Profile& p, const std::vector<std::array<std::uint32_t, 3>>& t) {
+    const std::vector<glm::dvec2> pts = profile_points(p);
+    std::ostringstream why;
+    const std::size_t want = pts.size() + 2 * p.holes.size() - 2;
+    if (t.size() != want)
+        why << " expected " << want << " triangles (n + 2h − 2 with n = " << pts.size() << ", h = " << p.holes.size()
+            << "), got " << t.size() << ";";
+    std::map<std::pair<std::uint32_t, std::uint32_t>, int> used;
+    for (std::size_t k = 0; k < t.size(); ++k) {
+        const auto& tr = t[k];
+        if (tr[0] >= pts.size() || tr[1] >= pts.size() || tr[2] >= pts.size()) {
+            why << " triangle " << k << " has an index >= " << pts.size() << " points;";
+            return why.str();
+        }
+        if (geolab::orient2d(pts[tr[0]], pts[tr[1]], pts[tr[2]]) <= 0)
+            why << " triangle " << k << " (" << tr[0] << ", " << tr[1] << ", " << tr[2] << ") "
+                << str(pts[tr[0]]) << " " << str(pts[tr[1]]) << " " << str(pts[tr[2]])
+                << " is not counter-clockwise (or has zero area);";
+        for (int e = 0; e < 3; ++e) ++used[{tr[std::size_t(e)], tr[std::size_t((e + 1) % 3)]}];
+    }
+    std::map<std::pair<std::uint32_t, std::uint32_t>, bool> loop_edge;
+    std::uint32_t start = 0;
+    for (std::size_t l = 0; l <= p.holes.size(); ++l) {
+        const auto len = std::uint32_t(l == 0 ? p.outer.size() : p.holes[l - 1].size());
+        for (std::uint32_t i = 0; i < len; ++i) loop_edge[{start + i, start + (i + 1) % len}] = true;
+        start += len;
+    }
+    int reported = 0;
+    for (const auto& [e, on] : loop_edge) {
+        const int fwd = used.count(e) ? used[e] : 0, back = used.count({e.second, e.first}) ? used[{e.second, e.first}] : 0;
+        if ((fwd != 1 || back != 0) && reported++ < 3)
+            why << " the loop edge " << e.first << "→" << e.second << " " << str(pts[e.first]) << " " << str(pts[e.second])
+                << " is used " << fwd << " times as it runs (expected 1) and " << back << " times reversed (expected 0);";
+    }
+    for (const auto& [e, n] : used) {
+        if (loop_edge.count(e) || loop_edge.count({e.second, e.first})) continue;
+        const auto r = used.find({e.second, e.first});
+        if ((n != 1 || r == used.end() || r->second != 1) && reported++ < 6)
+            why << " the inner edge " << e.first << "→" << e.second << " " << str(pts[e.first]) << " " << str(pts[e.second])
+                << " is used " << n << " times and reversed " << (r == used.end() ? 0 : r->second)
+                << " times (a diagonal is shared by exactly two triangles, once each way);";
+    }
+    return why.str();
 }
 
 // Shoelace in long double.

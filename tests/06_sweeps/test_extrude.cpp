@@ -134,6 +134,7 @@ TEST_SUITE("Task 3: extrusion") {
         CHECK_THROWS_AS(extrude(p, {{1, 0, 0}, 1, 0, 1}), std::invalid_argument);
         CHECK_THROWS_AS(extrude(p, {{0, 0, 1}, 1, 0, 0}), std::invalid_argument);
         CHECK_THROWS_AS(extrude(p, {{0, 0, 1}, 2, 3.2, 1}), std::invalid_argument);
+        CHECK_THROWS_AS(extrude(p, {{0, 0, 1}, 2, pi, 1}), std::invalid_argument);  // exactly a quarter turn a step
         CHECK_THROWS_AS(extrude(p, {{0, 0, NAN}, 1, 0, 1}), std::invalid_argument);
         CHECK_THROWS_AS(extrude(p, {{NAN, 0, 1}, 1, 0, 1}), std::invalid_argument);
         CHECK_THROWS_AS(extrude(p, {{0, INFINITY, 1}, 1, 0, 1}), std::invalid_argument);

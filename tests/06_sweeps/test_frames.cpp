@@ -64,10 +64,51 @@ TEST_SUITE("Task 5: frames") {
         const RmfResult rm = rotation_minimizing_frames(s, {0, 1, 0});
         for (std::size_t i = 1; i < rm.frames.size(); ++i)
             CHECK_MESSAGE(glm::dot(rm.frames[i].N, rm.frames[i - 1].N) > 0.99, "RMF must not flip (sample " << i << ")");
+        // The threshold: k's part orthogonal to T of length exactly 1e-9 is a straight run, 1.5e-9 is not.
+        for (double e : {1e-9, 1.5e-9}) {
+            const Path tiny{{{0, 0, 0}, {1, 0, 0}, {2, 0, 0}}, {{1, 0, 0}, {1, 0, 0}, {1, e, 0}}, false};
+            const auto ft = frenet_frames(tiny);
+            const bool defined = e > 1e-9;
+            const bool ok = defined ? glm::length(ft[1].N - glm::dvec3(0, 1, 0)) < 1e-12 : ft[1].N == glm::dvec3(0.0);
+            CHECK_MESSAGE(ok, "tangents (1,0,0) (1,0,0) (1," << e << ",0): k at sample 1 is (0, " << e << ", 0), so N should be "
+                                                           << (defined ? "(0, 1, 0)" : "0 (|k⊥| ≤ 1e-9)") << ", got " << str(ft[1].N));
+        }
+        // Two samples are enough for a path.
+        const Path two{{{0, 0, 0}, {1, 0, 0}}, {glm::normalize(glm::dvec3(1, -1, 0)), glm::normalize(glm::dvec3(1, 1, 0))}, false};
+        const auto f2 = frenet_frames(two);
+        REQUIRE(f2.size() == 2);
+        for (const Frame& f : f2) {  // both use k = T₁ − T₀ = (0, √2, 0): N is T turned left by 90°
+            const glm::dvec3 want{-f.T.y, f.T.x, 0};
+            CHECK_MESSAGE(glm::length(f.N - want) < 1e-12, "a two-sample path turning left: N " << str(want) << ", got " << str(f.N));
+        }
+        CHECK_MESSAGE(rotation_minimizing_frames(two, {0, 0, 1}).frames.size() == 2, "two samples: two RMF frames");
+    }
+
+    TEST_CASE("frenet_frames: a closed path wraps around (a coarse trefoil; the regular 12-gon)" * geolab::points(1) *
+              geolab::hint("On a closed path sample 0's neighbours are samples n − 1 and 1, and sample n − 1's are n − 2 "
+                           "and 0.")) {
+        const Path knot = trefoil_path(16, 1.0);  // 16 samples: neighbours far apart, so the wrong ones show
+        const auto fk = frenet_frames(knot);
+        REQUIRE(fk.size() == 16);
+        for (std::size_t i = 0; i < 16; ++i) {
+            const glm::dvec3 k = knot.tangents[(i + 1) % 16] - knot.tangents[(i + 15) % 16], t = knot.tangents[i];
+            const glm::dvec3 want = glm::normalize(k - glm::dot(k, t) * t);
+            CHECK_MESSAGE(glm::length(fk[i].N - want) < 1e-9, "trefoil_path(16), sample " << i << ": N from k = T" << (i + 1) % 16
+                                                              << " − T" << (i + 15) % 16 << " is " << str(want) << ", got " << str(fk[i].N));
+        }
+        std::vector<glm::dvec3> pts;
+        for (int i = 0; i < 12; ++i) pts.push_back({2 * std::cos(2 * pi * i / 12), 2 * std::sin(2 * pi * i / 12), 1});
+        const auto f = frenet_frames(polyline_path(pts, true));
+        REQUIRE(f.size() == 12);
+        for (std::size_t i = 0; i < 12; ++i) {
+            const glm::dvec3 want = -glm::normalize(glm::dvec3(pts[i].x, pts[i].y, 0));
+            CHECK_MESSAGE(glm::length(f[i].N - want) < 1e-9, "sample " << i << ": N expected " << str(want) << ", got " << str(f[i].N));
+            CHECK_MESSAGE(frame_problem(f[i]).empty(), "frame " << i << ":" << frame_problem(f[i]));
+        }
     }
 
     TEST_CASE("rotation_minimizing_frames: one helix turn from Frenet's N ends 1.8403023690 rad from N toward B" *
-              geolab::points(3) *
+              geolab::points(2) *
               geolab::hint("Double reflection: v₁ = xᵢ₊₁ − xᵢ, r_L = r − (2/c₁)(v₁·r)v₁, t_L likewise, v₂ = Tᵢ₊₁ − t_L, "
                            "r = r_L − (2/c₂)(v₂·r_L)v₂ (Wang et al. 2008; handout §6).")) {
         for (int n : {1025, 2049}) {
@@ -125,7 +166,7 @@ TEST_SUITE("Task 5: frames") {
     }
 
     TEST_CASE("rotation_minimizing_frames: a closed path's mismatch is measured; then distributed so the frames close" *
-              geolab::points(3) *
+              geolab::points(2) *
               geolab::hint("Carry the frame once around (last sample back to sample 0), measure the angle from N₀ about "
                            "T₀, then turn frame i by −mismatch·sᵢ/L about Tᵢ (handout §6).")) {
         const int n = 3000;
@@ -156,6 +197,56 @@ TEST_SUITE("Task 5: frames") {
         }
         CHECK_MESSAGE(worst < 1e-9, "each step should turn by −mismatch·Δs/L beyond the pure RMF; worst deviation " << worst);
         for (int i = 0; i < n; i += 97) CHECK_MESSAGE(frame_problem(r.frames[i]).empty(), "frame " << i << ":" << frame_problem(r.frames[i]));
+        // Few samples: the mismatch is the discrete one, the frame carried by double reflection once around.
+        for (int m : {7, 40}) {
+            const Path q = trefoil_path(m, 1.3);
+            const glm::dvec3 n0 = glm::normalize(glm::cross(q.tangents[0], glm::dvec3(0.2, 0, 1)));
+            const RmfResult rq = rotation_minimizing_frames(q, n0);
+            glm::dvec3 carried = n0;
+            for (int i = 0; i < m; ++i)
+                carried = reflect_step(q.points[i], q.tangents[i], carried, q.points[(i + 1) % m], q.tangents[(i + 1) % m]);
+            const double mis = angle_about(n0, carried, q.tangents[0]);
+            INFO("input: trefoil_path(" << m << ", 1.3)");
+            CHECK_MESSAGE(std::abs(rq.mismatch - mis) < 1e-10, "mismatch: expected " << mis << " (the normal carried once "
+                                                                "around by double reflection), got " << rq.mismatch);
+            double Lq = 0;
+            for (int i = 0; i < m; ++i) Lq += glm::length(q.points[(i + 1) % m] - q.points[i]);
+            double s = 0, worst_q = 0;
+            glm::dvec3 pure = n0;  // the undistributed RMF normal
+            for (int i = 1; i < m; ++i) {
+                pure = reflect_step(q.points[i - 1], q.tangents[i - 1], pure, q.points[i], q.tangents[i]);
+                s += glm::length(q.points[i] - q.points[i - 1]);
+                worst_q = std::max(worst_q, std::abs(wrap(angle_about(pure, rq.frames[i].N, q.tangents[i]) + mis * s / Lq)));
+            }
+            CHECK_MESSAGE(worst_q < 1e-10, "frame i should be the RMF turned by −mismatch·sᵢ/L about Tᵢ; worst deviation " << worst_q);
+        }
+    }
+
+    TEST_CASE("rotation_minimizing_frames: the initial normal (relative test); a zero v₂ skips the second reflection" *
+              geolab::points(1) *
+              geolab::hint("N₀ is the initial normal's part orthogonal to T₀, refused when it is no longer than 1e-9 times "
+                           "the normal's length; when v₂ = Tᵢ₊₁ − t_L is 0 only the first reflection is made.")) {
+        const Path up = polyline_path({{0, 0, 0}, {0, 0, 1}, {0, 0, 2}}, false);  // T = (0, 0, 1) exactly
+        CHECK_THROWS_AS(rotation_minimizing_frames(up, {1e-9, 0, 1}), std::invalid_argument);  // orthogonal part 1e-9 · 1
+        CHECK_THROWS_AS(rotation_minimizing_frames(up, {1e-4, 0, 1e6}), std::invalid_argument);  // 1e-4 < 1e-9 · 1e6
+        for (glm::dvec3 n0 : {glm::dvec3(1.5e-9, 0, 1), glm::dvec3(1e-2, 0, 1e6), glm::dvec3(3, 0, -2)}) {
+            const RmfResult r = rotation_minimizing_frames(up, n0);
+            CHECK_MESSAGE(glm::length(r.frames[0].N - glm::dvec3(1, 0, 0)) < 1e-12,
+                          "initial normal " << str(n0) << ": N₀ should be (1, 0, 0), got " << str(r.frames[0].N));
+        }
+        // A step sideways (v₁ ⟂ T, T unchanged): t_L = Tᵢ₊₁, so v₂ = 0 and N is only reflected in the bisecting plane.
+        const Path side{{{0, 0, 0}, {1, 0, 0}}, {{0, 1, 0}, {0, 1, 0}}, false};
+        const RmfResult r = rotation_minimizing_frames(side, {1, 0, 0});
+        CHECK_MESSAGE(glm::length(r.frames[1].N - glm::dvec3(-1, 0, 0)) < 1e-15,
+                      "points (0,0,0) (1,0,0), both tangents (0,1,0), N₀ (1,0,0): N₁ = the reflection (−1, 0, 0), got "
+                          << str(r.frames[1].N));
+        // A step almost sideways: t_L is near Tᵢ₊₁ (|v₂|² ≈ 0.08), and the second reflection still counts.
+        const Path sharp{{{0, 0, 0}, {1, 0, 0.2}}, {glm::normalize(glm::dvec3(0.3, 1, 0)), glm::normalize(glm::dvec3(0, 1, 0.1))}, false};
+        const glm::dvec3 n0 = glm::normalize(glm::cross(sharp.tangents[0], glm::dvec3(0, 0, 1)));
+        const glm::dvec3 want = reflect_step(sharp.points[0], sharp.tangents[0], n0, sharp.points[1], sharp.tangents[1]);
+        const RmfResult rs = rotation_minimizing_frames(sharp, n0);
+        CHECK_MESSAGE(glm::length(rs.frames[1].N - want) < 1e-12, "a sharp step: N₁ expected " << str(want) << " (both "
+                                                                  "reflections), got " << str(rs.frames[1].N));
     }
 
     TEST_CASE("rotation_minimizing_frames: a planar closed curve has mismatch 0; bad input is rejected" * geolab::points(1) *
@@ -168,8 +259,24 @@ TEST_SUITE("Task 5: frames") {
         for (const Frame& f : r.frames) CHECK_MESSAGE(glm::length(f.N - glm::dvec3(0, 0, 1)) < 1e-9, "N should stay (0, 0, 1), got " << str(f.N));
         Path bad = helix_path(1, 1, 1, 10);
         CHECK_THROWS_AS(rotation_minimizing_frames(bad, bad.tangents[0]), std::invalid_argument);
+        const auto message = [](const Path& q) {
+            try {
+                rotation_minimizing_frames(q, {-1, 0, 0});
+            } catch (const std::invalid_argument& e) {
+                return std::string(e.what());
+            }
+            return std::string("(nothing thrown)");
+        };
         bad.points[4] = bad.points[3];
-        CHECK_THROWS_AS(rotation_minimizing_frames(bad, {-1, 0, 0}), std::invalid_argument);
+        const std::string m34 = message(bad);
+        CHECK_MESSAGE(m34.find("points 3 and 4") != std::string::npos, "points 3 and 4 equal: the message should name "
+                                                                       "'points 3 and 4', got: " << m34);
+        Path loop = helix_path(1, 1, 0.9, 10);
+        loop.closed = true;
+        loop.points[9] = loop.points[0];
+        const std::string m90 = message(loop);
+        CHECK_MESSAGE(m90.find("points 9 and 0") != std::string::npos, "a closed path whose last point is its first: the "
+                                                                       "message should name 'points 9 and 0', got: " << m90);
         Path fewer = helix_path(1, 1, 1, 10);
         fewer.tangents.pop_back();
         CHECK_THROWS_AS(rotation_minimizing_frames(fewer, {-1, 0, 0}), std::invalid_argument);

@@ -101,6 +101,8 @@ TEST_SUITE("Task 7: measures") {
         CHECK_MESSAGE(close(full.lateral_area, 96 * pi, 1e-14), "lateral area: expected 96π = " << 96 * pi << ", got " << full.lateral_area);
         const Pappus q = pappus(p, pi / 3);
         CHECK_MESSAGE(close(q.volume, 8 * pi, 1e-14), "angle π/3: expected 8π, got " << q.volume);
+        const Pappus h = pappus(p, 0.5);
+        CHECK_MESSAGE(close(h.volume, 12.0, 1e-14), "angle 0.5: expected V = 0.5 · 12 · 2 = 12, got " << h.volume);
         Rng rng(123);
         for (int k = 0; k < 8; ++k) {
             const Profile s = star_with_holes(rng, rng.integer(4, 20), k % 3);

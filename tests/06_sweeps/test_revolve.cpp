@@ -124,6 +124,10 @@ TEST_SUITE("Task 4: revolution") {
                 INFO("input: " << str(p) << " revolved by " << a << " rad in " << m << " segments");
                 const std::string bad = surface_problem(mesh, 2 - 2 * long(p.holes.size()), 1);
                 CHECK_MESSAGE(bad.empty(), "expected a closed oriented solid of genus " << p.holes.size() << ":" << bad);
+                std::size_t want_v = 0;  // rings of segments + 1, one vertex per pole
+                for (auto q : profile_points(clip_to_axis(p))) want_v += q.x == 0 ? 1 : m + 1;
+                CHECK_MESSAGE(mesh.n_vertices() == want_v, "expected " << want_v << " vertices (rings of " << m + 1
+                                                                      << " at φ = 0 .. angle), got " << mesh.n_vertices());
                 const double V = double(volume_ld(mesh)), want = double(poly_volume(p, m, a));
                 CHECK_MESSAGE(close(V, want, 1e-10), "volume: expected " << want << ", got " << V);
                 LD area = 0;
@@ -169,6 +173,18 @@ TEST_SUITE("Task 4: revolution") {
         CHECK_MESSAGE(surface_problem(cm, 2, 1).empty(), "a right triangle on the axis revolves to a closed cone: "
                                                              << surface_problem(cm, 2, 1));
         CHECK_MESSAGE(close(double(volume_ld(cm)), double(poly_volume(cone, 20, 2 * pi)), 1e-11), "cone volume");
+        // The unit square [−1, 1] × [0, 1] with points on the axis, started at each point in turn: the clipped loop
+        // keeps no repeated point (also where the loop's last point and the first crossing are the same point).
+        const Loop across{{-1, 1}, {-1, 0}, {0, 0}, {1, 0}, {1, 1}, {0, 1}};
+        for (std::size_t k = 0; k < across.size(); ++k) {
+            const Profile pk{rotated(across, k), {}};
+            const Profile ck = clip_to_axis(pk);
+            INFO("input: " << str(pk));
+            CHECK_MESSAGE(ck.outer.size() == 4, "expected the 4 corners of [0, 1] × [0, 1], got " << str(ck.outer));
+            CHECK_MESSAGE(close(double(area_ld(ck.outer)), 1.0, 1e-15), "clipped area: expected 1, got " << double(area_ld(ck.outer)));
+            const PolygonSoup mk = revolve(pk, {12, 2 * pi});
+            CHECK_MESSAGE(surface_problem(mk, 2, 1).empty(), "a closed cylinder expected: " << surface_problem(mk, 2, 1));
+        }
         const Profile inside = square_with_hole({3, 0});
         const Profile same = clip_to_axis(inside);
         CHECK_MESSAGE((same.outer == inside.outer && same.holes == inside.holes), "a profile at x > 0 comes back unchanged");
@@ -183,6 +199,16 @@ TEST_SUITE("Task 4: revolution") {
         CHECK_THROWS_AS(revolve(p, {8, 7.0}), std::invalid_argument);
         CHECK_THROWS_AS(clip_to_axis(square_with_hole({0.5, 0})), std::invalid_argument);
         CHECK_THROWS_AS(clip_to_axis({rectangle_loop(-3, 0, -1, 1), {}}), std::invalid_argument);
+        CHECK_THROWS_AS(clip_to_axis({rectangle_loop(-3, 0, 0, 1), {}}), std::invalid_argument);  // touches the axis only
+        CHECK_THROWS_AS(clip_to_axis({Loop{{-1, 0}, {0, 0}, {0, 1}, {0, 2}, {-1, 2}}, {}}), std::invalid_argument);  // 3 points on it
+        CHECK_THROWS_AS(clip_to_axis({rectangle_loop(-3, -3, 3, 3), {reversed(rectangle_loop(0, 0, 1, 1))}}),
+                        std::invalid_argument);  // a hole touching the axis
+        // The angle: |angle − 2π| ≤ 1e-12 is a full turn (seam shared), else (0, 2π) a partial one.
+        const Profile ring{rectangle_loop(2, 0, 3, 1), {}};
+        CHECK_MESSAGE(revolve(ring, {8, 2 * pi + 0.5e-12}).n_vertices() == 32, "2π + 0.5e-12 is a full revolution: 4 rings of 8");
+        CHECK_MESSAGE(revolve(ring, {8, 2 * pi - 0.5e-12}).n_vertices() == 32, "2π − 0.5e-12 is a full revolution: 4 rings of 8");
+        CHECK_MESSAGE(revolve(ring, {8, 2 * pi - 1.5e-12}).n_vertices() == 36, "2π − 1.5e-12 is a partial revolution: 4 rings of 9");
+        CHECK_THROWS_AS(revolve(ring, {8, 2 * pi + 1.5e-12}), std::invalid_argument);
         Profile q = issue_profile();
         q.holes[0] = reversed(q.holes[0]);
         CHECK_THROWS_AS(revolve(q, {8, 2 * pi}), std::invalid_argument);

@@ -158,6 +158,39 @@ TEST_SUITE("Task 6: sweeps") {
         const SweepCheck u = check_sweep({circle_loop({0, 0}, 0.6, 8), {}}, polyline_path(pts, false));
         CHECK_MESSAGE(close(u.min_radius_of_curvature, std::sqrt(0.5), 1e-12), "(0,0,0) (1,0,0) (1,1,0) (2,1,0): the "
                                                                                "circumradius √2/2 at sample 1, got " << u.min_radius_of_curvature);
+        // An open path's ends are not neighbours: (0,0,0) … (0,0.5,0) ends close to its start (the three samples
+        // (0,0.5,0) (0,0,0) (4,0,0) would have circumradius √16.25/2), but only the inner samples' corners count
+        // (right angles; the tightest, legs 4 and 3.5 at sample 3, has circumradius √28.25/2).
+        pts = {{0, 0, 0}, {4, 0, 0}, {4, 4, 0}, {0, 4, 0}, {0, 0.5, 0}};
+        const SweepCheck o = check_sweep({circle_loop({0, 0}, 0.1, 8), {}}, polyline_path(pts, false));
+        CHECK_MESSAGE((close(o.min_radius_of_curvature, std::sqrt(28.25) / 2, 1e-12) && o.at_sample == 3),
+                      "the open path (0,0,0) (4,0,0) (4,4,0) (0,4,0) (0,0.5,0): circumradius √28.25/2 at sample 3 (its ends "
+                      "have no corner), got " << o.min_radius_of_curvature << " at sample " << o.at_sample);
+        // Nor its last sample: (0,4,0) (0,1,0) (1,0.5,0) turns at sample 4 (circumradius √(1.25·13.25)/2), while the
+        // last sample with the first as a neighbour would give (0,1,0) (1,0.5,0) (0,0,0), circumradius 0.625.
+        pts = {{0, 0, 0}, {4, 0, 0}, {4, 4, 0}, {0, 4, 0}, {0, 1, 0}, {1, 0.5, 0}};
+        const SweepCheck l = check_sweep({circle_loop({0, 0}, 0.1, 8), {}}, polyline_path(pts, false));
+        CHECK_MESSAGE((close(l.min_radius_of_curvature, std::sqrt(1.25 * 13.25) / 2, 1e-12) && l.at_sample == 4),
+                      "the open path (0,0,0) (4,0,0) (4,4,0) (0,4,0) (0,1,0) (1,0.5,0): circumradius " << std::sqrt(1.25 * 13.25) / 2
+                          << " at sample 4, got " << l.min_radius_of_curvature << " at sample " << l.at_sample);
+        // A path that comes back near itself is no curvature problem: a coil wound tighter than the profile (pitch
+        // 2π·0.05 ≈ 0.31 < the diameter 0.6; radius of curvature ≈ 2). check_sweep sees nothing; the mesh does.
+        const Path coil = helix_path(2, 0.05, 3, 300);
+        const Profile thick{circle_loop({0, 0}, 0.3, 12), {}};
+        const SweepCheck k = check_sweep(thick, coil);
+        CHECK_MESSAGE((!k.self_intersects && close(k.min_radius_of_curvature, (4 + 0.0025) / 2, 1e-3)),
+                      "a coil of radius 2, pitch 2π·0.05: radius of curvature about 2.00 > 0.3, no local self-intersection; got "
+                          << k.min_radius_of_curvature << ", " << k.self_intersects);
+        const auto kc = geolab::check_surface(sweep(thick, coil, projected_frames(coil, {0, 0, 1})));
+        CHECK_MESSAGE(kc.self_intersecting_pairs() > 0, "the coil's turns overlap: lib's check_surface should find "
+                                                        "intersecting face pairs in your sweep, found none");
+        // A tie counts: a right-angle corner of legs 3 and 4 has circumradius 5/2 exactly, as far as the profile reaches.
+        const Loop diamond{{2.5, 0}, {0, 1}, {-1, 0}, {0, -1}};
+        pts = {{0, 0, 0}, {3, 0, 0}, {3, 4, 0}};
+        const SweepCheck e = check_sweep({diamond, {}}, polyline_path(pts, false));
+        CHECK_MESSAGE((e.min_radius_of_curvature == 2.5 && e.profile_radius == 2.5 && e.self_intersects),
+                      "profile radius 2.5 = circumradius 2.5 of (0,0,0) (3,0,0) (3,4,0): self_intersects (≥), got radius "
+                          << e.profile_radius << ", circumradius " << e.min_radius_of_curvature << ", " << e.self_intersects);
         // A closed path whose sharpest corner is sample 0 (wrapping: samples n−1, 0, 1).
         pts = {{0, 0, 0}, {0.5, 0.5, 0}, {3, 0.5, 0}, {3, -3, 0}, {-3, -3, 0}, {-3, 0.5, 0}, {-0.5, 0.5, 0}};
         const SweepCheck w = check_sweep({circle_loop({0, 0}, 0.1, 8), {}}, polyline_path(pts, true));
@@ -174,10 +207,18 @@ TEST_SUITE("Task 6: sweeps") {
         const Profile p{circle_loop({0, 0}, 0.1, 6), {}};
         CHECK_THROWS_AS(sweep(p, path, std::vector<Frame>(9)), std::invalid_argument);
         CHECK_THROWS_AS(sweep({reversed(p.outer), {}}, path, std::vector<Frame>(10)), std::invalid_argument);
-        CHECK_THROWS_AS(sweep(p, helix_path(1, 1, 1, 1), std::vector<Frame>(1)), std::invalid_argument);
+        CHECK_THROWS_AS(sweep(p, Path{{{0, 0, 0}}, {{0, 0, 1}}, false}, std::vector<Frame>(1)), std::invalid_argument);
+        CHECK_THROWS_AS(check_sweep(p, Path{{{0, 0, 0}}, {{0, 0, 1}}, false}), std::invalid_argument);
         CHECK_THROWS_AS(check_sweep({reversed(p.outer), {}}, path), std::invalid_argument);
         Path two = helix_path(1, 1, 1, 2);
         two.closed = true;
         CHECK_THROWS_AS(sweep(p, two, std::vector<Frame>(2)), std::invalid_argument);
+        CHECK_THROWS_AS(check_sweep(p, two), std::invalid_argument);
+        // Three samples are enough for a closed path: a triangular ring of three prisms.
+        const Path tri = polyline_path({{0, 0, 0}, {4, 0, 0}, {0, 4, 0}}, true);
+        const PolygonSoup m = sweep(p, tri, projected_frames(tri, {0, 0, 1}));
+        CHECK_MESSAGE((m.n_vertices() == 18 && m.n_faces() == 36), "a closed path of 3 samples and a 6-point profile: 18 "
+                                                                    "vertices and 36 triangles, got " << m.n_vertices() << " and " << m.n_faces());
+        CHECK_NOTHROW(check_sweep(p, tri));
     }
 }  // TEST_SUITE

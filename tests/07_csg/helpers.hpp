@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <random>
 #include <sstream>
 #include <string>
@@ -206,6 +207,48 @@ std::string check_spans(const std::vector<Span>& got, Inside inside, double t_lo
         }
     }
     return "";
+}
+
+// ---- the calls with out-lists, in one expression --------------------------------------------------------------
+
+// A list that was used before: reused lists hold stale spans, which the call must replace.
+inline std::vector<Span> stale_list() { return {Span{-7e7, -6e7, glm::dvec3(0, 0, 1), glm::dvec3(0, 0, 1)}}; }
+
+// primitive_spans into a reused (stale) list; returns what the call left in it.
+inline std::vector<Span> spans_of(const Node& d, const Ray& r) {
+    std::vector<Span> out = stale_list();
+    primitive_spans(d, r, out);
+    return out;
+}
+// combine into a reused (stale) list; returns what the call left in it.
+inline std::vector<Span> combined(Op o, const std::vector<Span>& a, const std::vector<Span>& b) {
+    std::vector<Span> out = stale_list();
+    combine(o, a, b, out);
+    return out;
+}
+// ray_spans on the tree prepared by the given prepare(), with the caller's lists: the tree's spans (lists[root]).
+inline std::vector<Span> tree_spans(const PreparedTree& p, const Ray& r, SpanLists& lists) {
+    ray_spans(p, r, lists);
+    REQUIRE_MESSAGE(lists.size() == p.nodes.size(), "ray_spans must resize lists to one list per node ("
+                                                         << p.nodes.size() << "), got " << lists.size() << " lists");
+    return lists[p.root];
+}
+inline std::vector<Span> tree_spans(const Tree& t, const Ray& r) {
+    SpanLists lists;
+    return tree_spans(prepare(t), r, lists);
+}
+// first_hit on the tree prepared by prepare(), with fresh lists.
+inline std::optional<Hit> hit_of(const Tree& t, const Ray& r, double t_min) {
+    SpanLists lists;
+    return first_hit(prepare(t), r, t_min, lists);
+}
+
+// Whether p lies on the surface of some leaf of t (within tol): an independent check that a point is on the
+// boundary of the tree's solid.
+inline bool on_some_leaf(const Tree& t, const glm::dvec3& p, double tol) {
+    for (const Node& d : t.nodes)
+        if (d.op == Op::leaf && std::abs(double(ref_distance(d, to_local(d.M, p)))) <= tol) return true;
+    return false;
 }
 
 // A tree from leaves in one line: op(a, b).

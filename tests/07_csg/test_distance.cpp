@@ -32,12 +32,13 @@ TEST_SUITE("Task 1: primitives") {
         check_distance_family(b, 2.0, 2);
         // corner region: the distance is Euclidean to the corner, not the max of the slabs
         const glm::dvec3 p(1.5, 2.0, 1.25);
-        CHECK_MESSAGE(close(primitive_distance(b, p), std::sqrt(3.0), 1e-12),
+        const double corner = primitive_distance(b, p);
+        CHECK_MESSAGE(close(corner, std::sqrt(3.0), 1e-12),
                       "box half extents (0.5, 1, 0.25) at (1.5, 2, 1.25): the nearest point is the corner, distance "
-                      "√3, got " << primitive_distance(b, p));
+                      "√3, got " << corner);
     }
 
-    TEST_CASE("primitive: cylinder and truncated cones against a search over the meridian outline" * geolab::points(3) *
+    TEST_CASE("primitive: cylinder and truncated cones against a search over the meridian outline" * geolab::points(2) *
               geolab::hint("A solid of revolution: work in (ρ, z) = (√(x² + y²), z); the section is a rectangle "
                            "(cylinder) or a trapezoid (cone) whose axis edge is NOT a boundary. Inside, the distance "
                            "is to the nearest of the bottom, the slanted side and the top.")) {
@@ -72,9 +73,9 @@ TEST_SUITE("Task 1: primitives") {
         Rng rng(7);
         for (int n = 0; n < 50; ++n) {
             const glm::dvec3 p = rng.point(2);
-            CHECK_MESSAGE(close(primitive_distance(q, p), p.x - 0.5, 1e-12),
-                          "the quadric 2x − 1 ≤ 0 (a plane) at " << str(p) << ": expected x − 0.5 = " << p.x - 0.5
-                                                                 << ", got " << primitive_distance(q, p));
+            const double got = primitive_distance(q, p);
+            CHECK_MESSAGE(close(got, p.x - 0.5, 1e-12), "the quadric 2x − 1 ≤ 0 (a plane) at "
+                                                            << str(p) << ": expected x − 0.5 = " << p.x - 0.5 << ", got " << got);
         }
         // the unit sphere as a quadric: q = |p|² − 1, |∇q| = 2|p|
         Node u;
@@ -83,8 +84,8 @@ TEST_SUITE("Task 1: primitives") {
         u.Q[3][3] = -1;
         const glm::dvec3 p(0.3, -1.2, 0.9);
         const double want = (glm::dot(p, p) - 1) / (2 * glm::length(p));
-        CHECK_MESSAGE(close(primitive_distance(u, p), want, 1e-12),
-                      "unit sphere quadric at " << str(p) << ": expected " << want << ", got " << primitive_distance(u, p));
+        const double got_u = primitive_distance(u, p);
+        CHECK_MESSAGE(close(got_u, want, 1e-12), "unit sphere quadric at " << str(p) << ": expected " << want << ", got " << got_u);
         // the unit sphere about (1, 0, 0) as a quadric: q = (x − 1)² + y² + z² − 1 (linear terms count in ∇q)
         Node w;
         w.shape = Shape::quadric;
@@ -94,11 +95,12 @@ TEST_SUITE("Task 1: primitives") {
         for (glm::dvec3 x : {glm::dvec3(2.5, 0.5, -0.3), glm::dvec3(1.3, 0, 0), glm::dvec3(0.2, 0.1, 0.4)}) {
             const glm::dvec3 c = x - glm::dvec3(1, 0, 0);
             const double q = glm::dot(c, c) - 1, want2 = q / (2 * glm::length(c));
-            CHECK_MESSAGE(close(primitive_distance(w, x), want2, 1e-12), "the quadric (x − 1)² + y² + z² − 1 at "
-                              << str(x) << ": expected q/|∇q| = " << want2 << ", got " << primitive_distance(w, x));
+            const double got = primitive_distance(w, x);
+            CHECK_MESSAGE(close(got, want2, 1e-12), "the quadric (x − 1)² + y² + z² − 1 at "
+                                                        << str(x) << ": expected q/|∇q| = " << want2 << ", got " << got);
         }
-        CHECK_MESSAGE(primitive_distance(w, {1, 0, 0}) == -1.0,
-                      "at the centre ∇q = 0: return q itself (−1), got " << primitive_distance(w, {1, 0, 0}));
+        const double centre = primitive_distance(w, {1, 0, 0});
+        CHECK_MESSAGE(centre == -1.0, "at the centre ∇q = 0: return q itself (−1), got " << centre);
     }
 
     TEST_CASE("primitive: every shape is 1-Lipschitz; zero on its surface and negative exactly inside" *
@@ -134,11 +136,12 @@ TEST_SUITE("Task 1: primitives") {
 
 TEST_SUITE("Task 2: signed distances") {
     TEST_CASE("smooth_min: the pinned polynomial formula; min where |a − b| ≥ k; at most k/4 below" *
-              geolab::points(3) *
+              geolab::points(2) *
               geolab::hint("h = clamp(1/2 + (b − a)/(2k), 0, 1), smin = b(1 − h) + a h − k h (1 − h); k ≤ 0 throws.")) {
-        CHECK_MESSAGE(close(smooth_min(0.0, 0.0, 1.0), -0.25, 1e-15), "smin(0, 0, 1) = −1/4, got " << smooth_min(0, 0, 1));
-        CHECK_MESSAGE(close(smooth_min(0.1, 0.3, 0.4), 0.1 * 0.75 + 0.3 * 0.25 - 0.4 * 0.75 * 0.25, 1e-15),
-                      "smin(0.1, 0.3, 0.4): h = 0.75, expected 0.075, got " << smooth_min(0.1, 0.3, 0.4));
+        const double s0 = smooth_min(0.0, 0.0, 1.0), s1 = smooth_min(0.1, 0.3, 0.4);
+        CHECK_MESSAGE(close(s0, -0.25, 1e-15), "smin(0, 0, 1) = −1/4, got " << s0);
+        CHECK_MESSAGE(close(s1, 0.1 * 0.75 + 0.3 * 0.25 - 0.4 * 0.75 * 0.25, 1e-15),
+                      "smin(0.1, 0.3, 0.4): h = 0.75, expected 0.075, got " << s1);
         Rng rng(11);
         for (int n = 0; n < 500; ++n) {
             const double a = rng.uniform(-2, 2), b = rng.uniform(-2, 2), k = rng.uniform(0.01, 1.5);
@@ -154,7 +157,7 @@ TEST_SUITE("Task 2: signed distances") {
     }
 
     TEST_CASE("sdf: two unit cubes offset by 0.5 — union min; intersection max; difference max(a; −b)" *
-              geolab::points(4) *
+              geolab::points(3) *
               geolab::hint("A − B is max(a, −b): inside A and outside B. max(a, b) would be the intersection.")) {
         const Tree A = unit_cube_at(glm::dvec3(0.0)), B = unit_cube_at(glm::dvec3(0.5));
         Rng rng(12);
@@ -182,16 +185,18 @@ TEST_SUITE("Task 2: signed distances") {
             for (int k = 0; k < 10; ++k) {
                 const glm::dvec3 x = c + rng.point(3.0);
                 const double want = glm::length(x - c) - 0.5 * s;
+                const double got = sdf(t, x);
                 INFO("sphere radius 0.5 scaled by " << s << " and moved to " << str(c) << ", at " << str(x)
-                                                     << ": expected " << want << ", got " << sdf(t, x));
-                CHECK(close(sdf(t, x), want, 1e-10));
+                                                     << ": expected " << want << ", got " << got);
+                CHECK(close(got, want, 1e-10));
             }
             // a box under a rigid motion: the distance of the local point
             const Tree b = leaf(Shape::box, {0.3, 0.6, 0.2}, M);
             const glm::dvec3 x = c + rng.point(1.5);
             const double want = double(ref_distance(b.nodes[0], to_local(M, x)));
-            CHECK_MESSAGE(close(sdf(b, x), want, 1e-10), "box (0.3, 0.6, 0.2) moved rigidly, at " << str(x)
-                                                                 << ": expected " << want << ", got " << sdf(b, x));
+            const double got = sdf(b, x);
+            CHECK_MESSAGE(close(got, want, 1e-10), "box (0.3, 0.6, 0.2) moved rigidly, at " << str(x) << ": expected "
+                                                                                             << want << ", got " << got);
         }
         // a non-uniform scaling: a lower bound of the distance, with the right sign
         const Tree e = leaf(Shape::sphere, {1, 0, 0}, scale({2, 1, 0.5}));
@@ -204,7 +209,7 @@ TEST_SUITE("Task 2: signed distances") {
         }
     }
 
-    TEST_CASE("sdf: min/max is exact outside a union but only a bound inside and near edges" * geolab::points(3) *
+    TEST_CASE("sdf: min/max is exact outside a union but only a bound inside and near edges" * geolab::points(2) *
               geolab::hint("Union = min(a, b) exactly; the test also shows where that is not the true distance.")) {
         // Two overlapping unit spheres at (±0.5, 0, 0); at the origin the true distance to the surface is the
         // distance to the circle where the spheres meet: √(1 − 0.25) = 0.866..., but min(a, b) = −0.5.
@@ -223,7 +228,7 @@ TEST_SUITE("Task 2: signed distances") {
         CHECK_MESSAGE(w < std::sqrt(0.08) - 1e-6, "and that is less than the true distance √0.08 to the edge");
     }
 
-    TEST_CASE("sdf: blend nodes use smooth_min of the children's values" * geolab::points(2) *
+    TEST_CASE("sdf: blend nodes use smooth_min of the children's values" * geolab::points(1) *
               geolab::hint("Op::blend: smooth_min(a, b, k) with the node's k.")) {
         const Tree a = leaf(Shape::sphere, {0.5, 0, 0}, translate({-0.4, 0, 0}));
         const Tree b = leaf(Shape::sphere, {0.5, 0, 0}, translate({0.4, 0, 0}));
@@ -234,14 +239,42 @@ TEST_SUITE("Task 2: signed distances") {
             const double da = glm::length(x - glm::dvec3(-0.4, 0, 0)) - 0.5, db = glm::length(x - glm::dvec3(0.4, 0, 0)) - 0.5;
             const double h = std::clamp(0.5 + (db - da) / 0.6, 0.0, 1.0);
             const double want = db * (1 - h) + da * h - 0.3 * h * (1 - h);
-            CHECK_MESSAGE(close(sdf(t, x), want, 1e-12), "blend k = 0.3 of spheres at (±0.4, 0, 0) at " << str(x)
-                                                                                              << ": expected " << want << ", got " << sdf(t, x));
+            const double got = sdf(t, x);
+            CHECK_MESSAGE(close(got, want, 1e-12), "blend k = 0.3 of spheres at (±0.4, 0, 0) at " << str(x)
+                                                                                        << ": expected " << want << ", got " << got);
         }
+    }
+
+    TEST_CASE("sdf (prepared): reads each leaf's prepared stretch and inverse; never M" * geolab::points(2) *
+              geolab::hint("On a PreparedTree a leaf's value is stretch · primitive_distance(leaf, inverse · x): "
+                           "prepare() computed both once; recomputing them from M for every sample is what made the "
+                           "polygonization slow.")) {
+        // a rotated, non-uniformly scaled box minus a moved sphere; then every leaf's M overwritten with 0
+        const glm::dmat4 Mb = rotate(30, {1, 2, 0}) * scale({2, 1, 1.5}), Ms = translate({0.8, 0.3, 0});
+        const Tree t = op(Op::subtract, leaf(Shape::box, {0.5, 0.6, 0.4}, Mb), leaf(Shape::sphere, {0.5, 0, 0}, Ms));
+        PreparedTree p = prepare(t);
+        for (PreparedNode& n : p.nodes) n.node.M = glm::dmat4(0.0);
+        Rng rng(15);
+        for (int n = 0; n < 100; ++n) {
+            const glm::dvec3 x = rng.point(1.5);
+            const double db = double(ref_distance(t.nodes[0], to_local(Mb, x)));  // min_stretch(Mb) = 1
+            const double ds = double(ref_distance(t.nodes[1], to_local(Ms, x)));
+            const double want = std::max(db, -ds), got = sdf(p, x);
+            INFO("box (0.5, 0.6, 0.4) rotated 30° about (1, 2, 0) and scaled by (2, 1, 1.5) (stretch 1) minus a sphere r = 0.5 "
+                 "at (0.8, 0.3, 0), every node's M set to 0 after prepare(), at " << str(x) << ": expected " << want << ", got " << got);
+            CHECK(close(got, want, 1e-10));
+        }
+        // the stretch is the prepared one: doubled, the leaf's values double
+        PreparedTree s = prepare(leaf(Shape::sphere, {1, 0, 0}, translate({1, 0, 0})));
+        s.nodes[0].stretch = 2.0;
+        const double doubled = sdf(s, {4, 0, 0});
+        CHECK_MESSAGE(close(doubled, 4.0, 1e-14), "unit sphere at (1, 0, 0) with its prepared stretch set to 2, "
+                                                  "at (4, 0, 0): 2 · 2 = 4, got " << doubled);
     }
 }
 
 TEST_SUITE("Task 3: point membership") {
-    TEST_CASE("classify: the logo's points in; on and out" * geolab::points(3) *
+    TEST_CASE("classify: the logo's points in; on and out" * geolab::points(2) *
               geolab::hint("Leaves: on when |d| ≤ tol; combine with the three-valued rules of the header.")) {
         const Tree t = logo();
         Rng rng(21);
@@ -258,11 +291,13 @@ TEST_SUITE("Task 3: point membership") {
         CHECK_MESSAGE(counts[1] == 0, "random points are almost never on the surface, got " << counts[1] << " 'on'");
         // points on the surface: a face of the cube away from the holes and the sphere's cut
         for (glm::dvec3 x : {glm::dvec3(1, 0.7, 0.0), glm::dvec3(0.7, -1, 0.2), glm::dvec3(-0.2, 0.7, 1.0)}) {
-            CHECK_MESSAGE(classify(t, x, 1e-9) == Membership::on, "logo at " << str(x) << " (on a face of the cube): got " << str(classify(t, x, 1e-9)));
+            const Membership m = classify(t, x, 1e-9);
+            CHECK_MESSAGE(m == Membership::on, "logo at " << str(x) << " (on a face of the cube): got " << str(m));
         }
         // a point on the wall of the z hole (radius 0.55): on
         const glm::dvec3 w(0.55, 0, 0.8);
-        CHECK_MESSAGE(classify(t, w, 1e-9) == Membership::on, "logo at " << str(w) << " on the z hole's wall: got " << str(classify(t, w, 1e-9)));
+        const Membership mw = classify(t, w, 1e-9);
+        CHECK_MESSAGE(mw == Membership::on, "logo at " << str(w) << " on the z hole's wall: got " << str(mw));
         CHECK(classify(t, {0.8, 0.8, 0.1}, 1e-9) == Membership::in);
         CHECK(classify(t, {0, 0, 0}, 1e-9) == Membership::out);
         CHECK(classify(t, {0.95, 0.95, 0.95}, 1e-9) == Membership::out);  // cut off by the sphere
@@ -276,13 +311,15 @@ TEST_SUITE("Task 3: point membership") {
             const double size = scene_size(t);
             // just outside the box by 1e-4 of the size: on with rel_tol 1e-3, out with rel_tol 1e-5
             const glm::dvec3 x(s + 1e-4 * size, 0.95 * s, 0.95 * s);
-            CHECK_MESSAGE(classify(t, x, 1e-3) == Membership::on, "box ±" << s << " minus a sphere, a point 1e-4·size outside the box, rel_tol 1e-3: expected on, got " << str(classify(t, x, 1e-3)));
-            CHECK_MESSAGE(classify(t, x, 1e-5) == Membership::out, "the same with rel_tol 1e-5: expected out, got " << str(classify(t, x, 1e-5)));
+            const Membership loose = classify(t, x, 1e-3), tight = classify(t, x, 1e-5);
+            CHECK_MESSAGE(loose == Membership::on, "box ±" << s << " minus a sphere, a point 1e-4·size outside the box, rel_tol 1e-3: expected on, got " << str(loose));
+            CHECK_MESSAGE(tight == Membership::out, "the same with rel_tol 1e-5: expected out, got " << str(tight));
             const glm::dvec3 y(0.9 * s, 0.9 * s, 0.9 * s);
             CHECK(classify(t, y, 1e-9) == Membership::in);
             CHECK(classify(t, glm::dvec3(0.1 * s), 1e-9) == Membership::out);
             const glm::dvec3 z(0.8 * s, 0, 0);  // on the sphere, inside the box
-            CHECK_MESSAGE(classify(t, z, 1e-9) == Membership::on, "on the subtracted sphere: got " << str(classify(t, z, 1e-9)));
+            const Membership mz = classify(t, z, 1e-9);
+            CHECK_MESSAGE(mz == Membership::on, "on the subtracted sphere: got " << str(mz));
         }
         CHECK_THROWS_AS(classify(leaf(Shape::sphere, {1, 0, 0}), glm::dvec3(0.0), -1.0), std::invalid_argument);
         CHECK_MESSAGE(classify(leaf(Shape::sphere, {1, 0, 0}), glm::dvec3(0.0), 0.0) == Membership::in,

@@ -9,8 +9,10 @@
 #include <map>
 #include <numeric>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -341,12 +343,15 @@ public:
 
 // f = |p - c|^2 - R^2 without a Lipschitz constant (lipschitz() == 0): |grad f| = 2 |p - c| grows with the distance,
 // so the octrees' estimate (2 x the largest |grad f| on a 9^3 lattice) depends on exactly which lattice is sampled.
+// bounds() are the ball's box, or a larger box given (then the domain is not centred on c, and the estimate depends
+// on which end of each axis the lattice reaches).
 class QuadraticBall final : public ScalarField {
 public:
-    QuadraticBall(glm::dvec3 c, double r) : c_(c), r_(r) {}
+    QuadraticBall(glm::dvec3 c, double r) : c_(c), r_(r), box_{c - r, c + r} {}
+    QuadraticBall(glm::dvec3 c, double r, Box box) : c_(c), r_(r), box_(box) {}
     double value(const glm::dvec3& p) const override { return glm::dot(p - c_, p - c_) - r_ * r_; }
     glm::dvec3 gradient(const glm::dvec3& p) const override { return 2.0 * (p - c_); }
-    Box bounds() const override { return {c_ - r_, c_ + r_}; }
+    Box bounds() const override { return box_; }
     // the estimate build_octree / build_spherical_octree must make over the cube [lo, lo + side]^3
     double estimate(const glm::dvec3& lo, double side) const {
         double g = 0;
@@ -357,6 +362,34 @@ public:
     }
     glm::dvec3 c_;
     double r_;
+    Box box_;
+};
+
+// The distance to a sphere without a Lipschitz constant whose gradient is 1000 times too long within 1e-6 of one
+// point (the spike): the octrees' estimate of Lf (2 x the largest |grad f| on a 9^3 lattice) is huge exactly when
+// the lattice holds that point, and then nearly every cell is split. `scale` shrinks the gradient elsewhere (a
+// field whose |grad f| stays below 1 when scale < 0.5).
+class SpikyGradient final : public ScalarField {
+public:
+    SpikyGradient(glm::dvec3 c, double r, glm::dvec3 spike, double scale = 1.0) : c_(c), r_(r), spike_(spike), scale_(scale) {}
+    double value(const glm::dvec3& p) const override { return scale_ * (glm::length(p - c_) - r_); }
+    glm::dvec3 gradient(const glm::dvec3& p) const override {
+        const glm::dvec3 g = scale_ * glm::normalize(p - c_ + glm::dvec3(1e-300));
+        return glm::length(p - spike_) < 1e-6 ? 1000.0 * g : g;
+    }
+    Box bounds() const override { return {c_ - r_, c_ + r_}; }
+    // 2 x the largest |grad f| over `points`: what the octree must estimate when they are its lattice
+    double estimate(const std::vector<glm::dvec3>& points) const {
+        double g = 0;
+        for (const auto& q : points) g = std::max(g, glm::length(gradient(q)));
+        return 2.0 * g;
+    }
+
+private:
+    glm::dvec3 c_;
+    double r_;
+    glm::dvec3 spike_;
+    double scale_;
 };
 
 // A sphere a few finest cells wide at level 10 inside large bounds ([-1, 1]^3): the octrees refine only around it,
@@ -707,6 +740,288 @@ inline void given_vertices(Octree& t) {
         nd.vertex = std::uint32_t(t.vertices.size());
         t.vertices.push_back(DualVertex{sum / double(n), Qef{}});
     }
+}
+
+// An adaptive Cartesian tree without your simplify (Task 5): bottom-up, a node of level >= min_level whose 8 children
+// are leaves becomes a leaf when Ju et al.'s sign tests pass (its corners form one sheet; every edge midpoint, face
+// centre and the centre has the sign of a corner of its feature), computed here from the samples; its vertex is the
+// mean of the children's vertices (in the cell), or none when they have none. After given_vertices.
+inline std::size_t given_collapse(Octree& t, int min_level) {
+    auto connected = [](int mask) {
+        if (mask == 0) return true;
+        int seen = mask & -mask, todo = seen;
+        while (todo) {
+            int next = 0;
+            for (int c = 0; c < 8; ++c)
+                if (todo & (1 << c))
+                    for (int a = 0; a < 3; ++a) next |= 1 << (c ^ (1 << a));
+            todo = next & mask & ~seen;
+            seen |= todo;
+        }
+        return seen == mask;
+    };
+    std::size_t collapses = 0;
+    for (std::size_t ni = t.nodes.size(); ni-- > 0;) {
+        const OctreeNode nd = t.nodes[ni];
+        if (nd.is_leaf() || nd.level < min_level) continue;
+        bool leaves = true;
+        for (int c = 0; c < 8; ++c) leaves = leaves && t.nodes[nd.first_child + c].is_leaf();
+        if (!leaves) continue;
+        const std::int32_t half = t.cell_span(nd.level) / 2;
+        const glm::ivec3 base = t.corner(nd, 0);
+        int mask = 0;
+        for (int c = 0; c < 8; ++c) mask |= int(t.value(t.corner(nd, c)) <= 0.0) << c;
+        if (!connected(mask) || !connected(~mask & 0xff)) continue;
+        bool agree = true;
+        for (int i = 0; i < 3 && agree; ++i)
+            for (int j = 0; j < 3 && agree; ++j)
+                for (int k = 0; k < 3 && agree; ++k) {
+                    const bool in = t.value(base + half * glm::ivec3(i, j, k)) <= 0.0;
+                    bool some = false;
+                    for (int c = 0; c < 8; ++c) {
+                        const int ci[3] = {c & 1, (c >> 1) & 1, c >> 2}, p[3] = {i, j, k};
+                        bool on = true;
+                        for (int a = 0; a < 3; ++a) on = on && (p[a] == 1 || p[a] == 2 * ci[a]);
+                        if (on && ((mask >> c) & 1) == int(in)) some = true;
+                    }
+                    agree = some;
+                }
+        if (!agree) continue;
+        glm::dvec3 sum(0.0);
+        int n = 0;
+        for (int c = 0; c < 8; ++c) {
+            const std::uint32_t v = t.nodes[nd.first_child + c].vertex;
+            if (v != invalid_index) sum += t.vertices[v].position, ++n;
+        }
+        if ((n > 0) != (mask != 0 && mask != 0xff)) continue;
+        OctreeNode& parent = t.nodes[ni];
+        parent.first_child = invalid_index;
+        parent.signs = std::uint8_t(mask);
+        parent.vertex = invalid_index;
+        if (n > 0) {
+            parent.vertex = std::uint32_t(t.vertices.size());
+            t.vertices.push_back(DualVertex{sum / double(n), Qef{}});
+        }
+        ++collapses;
+    }
+    return collapses;
+}
+
+// ---- the polygons of contour (Task 6), computed here leaf by leaf from the contract -------------------------------
+// For every sign-changing minimal edge (no leaf around it is smaller than the leaf it was found in), the leaves in
+// the 4 quadrants around it (locate at the edge's midpoint +- half a finest cell along the other two axes; (b, c) =
+// (a + 1, a + 2) mod 3, quadrants (-,-), (+,-), (+,+), (-,+)), in that order when the edge's lower end is inside and
+// reversed otherwise, repeats dropped; a triangle, or a quad split along its shorter diagonal (equal diagonals:
+// either split). Spherical trees: radial edges on the polar axis give pole rings instead, edges on the inner sphere
+// are skipped. Slow and simple: for checking contour's output exactly.
+struct ReferenceContour {
+    using Tri = std::array<glm::dvec3, 3>;
+    std::vector<Tri> triangles;                         // from triangles and quads with a shorter diagonal
+    std::vector<std::array<glm::dvec3, 4>> tie_quads;   // quads whose diagonals are equally long
+    struct Ring {
+        bool north = true;
+        double r_lo = 0.0, r_hi = 0.0;
+        std::vector<glm::dvec3> ring;
+    };
+    std::vector<Ring> rings;
+    std::size_t edges = 0;   // sign-changing minimal edges that gave a polygon
+    std::string no_vertex;   // a leaf around a sign-changing minimal edge without a vertex (contour must throw)
+};
+
+inline ReferenceContour reference_contour(const Octree& t) {
+    ReferenceContour out;
+    const bool spherical = t.coordinates == Coordinates::spherical;
+    const std::int32_t n = t.resolution();
+    const int qb[4] = {-1, +1, +1, -1}, qc[4] = {-1, -1, +1, +1};
+    std::set<std::array<int, 6>> seen;  // edges by their canonical ends
+    auto position = [&](std::uint32_t leaf, const glm::ivec3& q0, int a) -> std::optional<glm::dvec3> {
+        const OctreeNode& nd = t.nodes[leaf];
+        if (nd.vertex != invalid_index && nd.vertex < t.vertices.size()) return t.vertices[nd.vertex].position;
+        if (out.no_vertex.empty())
+            out.no_vertex = "leaf " + std::to_string(leaf) + " (level " + std::to_string(int(nd.level)) + ", cell " +
+                            std::to_string(nd.x) + ", " + std::to_string(nd.y) + ", " + std::to_string(nd.z) +
+                            ") around the sign-changing edge from lattice point (" + std::to_string(q0.x) + ", " +
+                            std::to_string(q0.y) + ", " + std::to_string(q0.z) + ") along axis " + std::to_string(a);
+        return std::nullopt;
+    };
+    for (std::uint32_t li : tree_shape(t).leaves) {
+        const OctreeNode& nd = t.nodes[li];
+        const std::int32_t span = t.cell_span(nd.level);
+        for (int a = 0; a < 3; ++a)
+            for (int c = 0; c < 8; ++c) {
+                if (c & (1 << a)) continue;
+                const glm::ivec3 q0 = t.corner(nd, c), q1 = t.corner(nd, c | (1 << a));
+                const glm::ivec3 k0 = t.canonical(q0), k1 = t.canonical(q1);
+                if (!seen.insert({k0.x, k0.y, k0.z, k1.x, k1.y, k1.z}).second) continue;
+                const bool in0 = t.value(q0) <= 0.0;
+                if (in0 == (t.value(q1) <= 0.0)) continue;
+                if (spherical && a == 0 && (q0.y == 0 || q0.y == n)) continue;  // a pole ring (below)
+                if (spherical && a != 0 && q0.x == 0) continue;                 // on the inner sphere
+                glm::ivec3 m2 = 2 * q0;
+                m2[a] += span;
+                const int b = (a + 1) % 3, cx = (a + 2) % 3;
+                std::uint32_t around[4];
+                bool inside_domain = true, minimal = true;
+                for (int k = 0; k < 4; ++k) {
+                    glm::ivec3 p2 = m2;
+                    p2[b] += qb[k];
+                    p2[cx] += qc[k];
+                    around[k] = t.locate(p2);
+                    if (around[k] == invalid_index) inside_domain = false;
+                    else if (t.nodes[around[k]].level > nd.level) minimal = false;
+                }
+                if (!inside_domain) continue;
+                if (!minimal) {  // a smaller leaf's edges subdivide it: found again from that leaf
+                    seen.erase({k0.x, k0.y, k0.z, k1.x, k1.y, k1.z});
+                    continue;
+                }
+                std::vector<std::uint32_t> poly;
+                for (int k = 0; k < 4; ++k) {
+                    const std::uint32_t l = around[in0 ? k : 3 - k];
+                    if (poly.empty() || poly.back() != l) poly.push_back(l);
+                }
+                if (poly.size() > 1 && poly.back() == poly.front()) poly.pop_back();
+                if (poly.size() < 3) continue;
+                std::vector<glm::dvec3> P;
+                for (std::uint32_t l : poly)
+                    if (auto p = position(l, q0, a)) P.push_back(*p);
+                if (P.size() != poly.size()) continue;
+                ++out.edges;
+                if (P.size() == 3) {
+                    out.triangles.push_back({P[0], P[1], P[2]});
+                    continue;
+                }
+                const double d02 = glm::dot(P[2] - P[0], P[2] - P[0]), d13 = glm::dot(P[3] - P[1], P[3] - P[1]);
+                if (d02 < d13 * (1.0 - 1e-12)) {
+                    out.triangles.push_back({P[0], P[1], P[2]});
+                    out.triangles.push_back({P[0], P[2], P[3]});
+                } else if (d13 < d02 * (1.0 - 1e-12)) {
+                    out.triangles.push_back({P[0], P[1], P[3]});
+                    out.triangles.push_back({P[1], P[2], P[3]});
+                } else {
+                    out.tie_quads.push_back({P[0], P[1], P[2], P[3]});
+                }
+            }
+        // pole rings: the radial edge on the axis, found from the leaf at phi index 0
+        if (!spherical || nd.z != 0) continue;
+        for (int pole = 0; pole < 2; ++pole) {
+            const bool north = pole == 0;
+            if (north ? nd.y != 0 : (std::int32_t(nd.y) + 1) * span != n) continue;
+            const int c0 = north ? 0 : 2, c1 = c0 | 1;
+            const glm::ivec3 q0 = t.corner(nd, c0), q1 = t.corner(nd, c1);
+            const bool in0 = t.value(q0) <= 0.0;
+            if (in0 == (t.value(q1) <= 0.0)) continue;
+            std::vector<std::uint32_t> ring;
+            bool minimal = true;
+            for (std::int32_t k = 0; k < n; ++k) {
+                const std::uint32_t l = t.locate({2 * q0.x + span, north ? 1 : 2 * n - 1, 2 * k + 1});
+                if (l == invalid_index || t.nodes[l].level > nd.level) minimal = false;
+                else if (ring.empty() || ring.back() != l) ring.push_back(l);
+            }
+            if (!minimal) continue;
+            if (ring.size() > 1 && ring.back() == ring.front()) ring.pop_back();
+            if (in0 != north) std::reverse(ring.begin(), ring.end());  // counter-clockwise seen from outside
+            ReferenceContour::Ring r;
+            r.north = north;
+            r.r_lo = t.lattice_spherical(q0).r;
+            r.r_hi = t.lattice_spherical(q1).r;
+            for (std::uint32_t l : ring)
+                if (auto p = position(l, q0, 0)) r.ring.push_back(*p);
+            out.rings.push_back(std::move(r));
+        }
+    }
+    return out;
+}
+
+// contour's triangles against the reference: the same oriented triangles (by their vertex positions, whatever the
+// order of the faces and of their first vertex); "" or what differs.
+inline std::string compare_polygons(const PolygonSoup& s, const ReferenceContour& ref) {
+    using Key = std::array<double, 9>;
+    auto key = [](glm::dvec3 a, glm::dvec3 b, glm::dvec3 c) {  // rotated so that the smallest point comes first
+        auto less = [](const glm::dvec3& u, const glm::dvec3& v) {
+            return u.x != v.x ? u.x < v.x : u.y != v.y ? u.y < v.y : u.z < v.z;
+        };
+        while (less(b, a) || less(c, a)) std::tie(a, b, c) = std::make_tuple(b, c, a);
+        return Key{a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z};
+    };
+    std::map<Key, int> got;
+    std::size_t bad = 0;
+    for (std::size_t f = 0; f < s.n_faces(); ++f) {
+        auto vs = s.face(f);
+        if (vs.size() != 3 || vs[0] >= s.n_vertices() || vs[1] >= s.n_vertices() || vs[2] >= s.n_vertices()) {
+            ++bad;
+            continue;
+        }
+        ++got[key(s.positions[vs[0]], s.positions[vs[1]], s.positions[vs[2]])];
+    }
+    std::ostringstream os;
+    if (bad) os << bad << " faces are not triangles of valid indices; ";
+    std::size_t missing = 0;
+    std::ostringstream first;
+    auto take = [&](const Key& k) {
+        auto it = got.find(k);
+        if (it == got.end() || it->second == 0) return false;
+        --it->second;
+        return true;
+    };
+    auto show = [](const Key& k) {
+        std::ostringstream o;
+        o.precision(6);
+        o << "(" << k[0] << ", " << k[1] << ", " << k[2] << ") (" << k[3] << ", " << k[4] << ", " << k[5] << ") ("
+          << k[6] << ", " << k[7] << ", " << k[8] << ")";
+        return o.str();
+    };
+    for (const auto& t : ref.triangles) {
+        const Key k = key(t[0], t[1], t[2]);
+        if (!take(k) && missing++ < 2) first << "\n  missing triangle " << show(k);
+    }
+    for (const auto& q : ref.tie_quads) {
+        const Key a = key(q[0], q[1], q[2]), b = key(q[0], q[2], q[3]), c = key(q[0], q[1], q[3]), d = key(q[1], q[2], q[3]);
+        if (got[a] > 0 && got[b] > 0) take(a), take(b);
+        else if (got[c] > 0 && got[d] > 0) take(c), take(d);
+        else if (missing++ < 2) first << "\n  missing quad (equal diagonals) " << show(a) << " + " << q[3].x << ", " << q[3].y << ", " << q[3].z;
+    }
+    std::size_t extra = 0;
+    for (const auto& [k, count] : got)
+        for (int i = 0; i < count; ++i)
+            if (extra++ < 2) first << "\n  unexpected triangle " << show(k);
+    if (!missing && !extra && !bad) return "";
+    os << missing << " expected triangles missing (or wound the other way, or split along the longer diagonal), "
+       << extra << " unexpected triangles; expected " << ref.triangles.size() + 2 * ref.tie_quads.size()
+       << " triangles from " << ref.edges << " sign-changing minimal edges, got " << s.n_faces() << first.str();
+    return os.str();
+}
+
+// contour's pole rings against the reference: the same rings (as cycles of positions, any starting vertex, the
+// same direction), north/south and radial extent; "" or what differs.
+inline std::string compare_rings(const PolygonSoup& s, const std::vector<PoleRing>& rings, const ReferenceContour& ref) {
+    std::vector<bool> used(ref.rings.size(), false);
+    std::ostringstream os;
+    std::size_t unmatched = 0;
+    for (const PoleRing& r : rings) {
+        std::vector<glm::dvec3> P;
+        for (std::uint32_t v : r.ring) P.push_back(v < s.n_vertices() ? s.positions[v] : glm::dvec3(1e300));
+        bool found = false;
+        for (std::size_t j = 0; j < ref.rings.size() && !found; ++j) {
+            const auto& q = ref.rings[j];
+            if (used[j] || q.north != r.north || q.ring.size() != P.size() || std::abs(q.r_lo - r.r_lo) > 1e-12 * (1 + q.r_hi) ||
+                std::abs(q.r_hi - r.r_hi) > 1e-12 * (1 + q.r_hi))
+                continue;
+            for (std::size_t shift = 0; shift < P.size() && !found; ++shift) {
+                bool same = true;
+                for (std::size_t i = 0; i < P.size() && same; ++i) same = P[(i + shift) % P.size()] == q.ring[i];
+                if (same) found = used[j] = true;
+            }
+        }
+        if (!found && unmatched++ < 2)
+            os << "\n  ring " << (r.north ? "north" : "south") << " r in [" << r.r_lo << ", " << r.r_hi << "] of "
+               << r.ring.size() << " vertices matches no expected ring (leaves around the axis edge by increasing phi, "
+               << "reversed when the axis edge's inner end is outside (north) / inside (south))";
+    }
+    if (!unmatched && rings.size() == ref.rings.size()) return "";
+    std::ostringstream out;
+    out << rings.size() << " pole rings, expected " << ref.rings.size() << ", " << unmatched << " of them wrong" << os.str();
+    return out.str();
 }
 
 // given_octree + given_vertices + your contour: Task 6 alone.

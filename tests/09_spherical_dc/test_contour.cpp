@@ -1,4 +1,7 @@
 // Lab 09, Tasks 4-6: dual vertices, simplification, polygons on the Cartesian octree (handout §5).
+#include <bit>
+#include <bitset>
+
 #include "helpers.hpp"
 
 using namespace lab09;
@@ -171,7 +174,7 @@ TEST_CASE("simplify: at the default tolerance a curved surface keeps its finest 
     CHECK(after == before);
 }
 
-TEST_CASE("simplify: the topology tests keep two nearby solids apart at any tolerance" * geolab::points(2) *
+TEST_CASE("simplify: the topology tests keep two nearby solids apart at any tolerance" * geolab::points(1) *
           geolab::hint("Collapse only when the parent's corner signs form one sheet AND every edge midpoint; face "
                        "centre and the cell centre agree with a corner of that edge/face/cell (Ju et al. 2002). "
                        "Handout §5.2.")) {
@@ -294,11 +297,204 @@ TEST_CASE("simplify: tolerance 0 merges only exact fits; a box with faces on coa
     }
 }
 
+TEST_CASE("simplify: the sign tests decide each of the 256 corner configurations (also with a stray point)" *
+          geolab::points(1) *
+          geolab::hint("Test (1): the inside corners are connected through cube edges, and so are the outside ones "
+                       "(both, for every one of the 256 configurations). Test (2): each of the 19 sub-lattice points "
+                       "that is not a corner (edge midpoints, face centres, the centre) has the sign of at least one "
+                       "corner of its edge, face or cell. Read the 27 signs from the children's OctreeNode::signs. "
+                       "Handout §5.2.")) {
+    // One parent of level 0 with 8 finest children (level 1). The test writes the children's signs (a pattern of
+    // the 27 sub-lattice signs) and gives each child with a sign change a vertex whose QEF is the 3 axis planes
+    // through the parent's centre: the merged QEF then fits exactly (Q = 0) with its minimiser at the centre, so
+    // only the sign tests decide. Nothing of your place_vertices or Qef::add is used.
+    const FieldPtr dummy = geolab::sphere({0.0, 0.0, 0.0}, 1.0);
+    const glm::dvec3 lo(0.5, -1.5, 2.0), centre = lo + glm::dvec3(1.0);
+    auto ijk = [](int p) { return glm::ivec3(p % 3, (p / 3) % 3, p / 9); };
+    // the parent corners of the feature whose centre is sub-lattice point p (the corner itself for a corner)
+    auto feature_corners = [&](int p) {
+        int corners = 0;
+        for (int c = 0; c < 8; ++c) {
+            bool on = true;
+            for (int a = 0; a < 3; ++a)
+                if (ijk(p)[a] != 1 && ijk(p)[a] != 2 * ((c >> a) & 1)) on = false;
+            if (on) corners |= 1 << c;
+        }
+        return corners;
+    };
+    // the corners of `mask` are connected through cube edges (breadth first; an empty set is connected)
+    auto connected = [](int mask) {
+        if (mask == 0) return true;
+        int seen = 0, todo = 0;
+        for (int c = 0; c < 8; ++c)
+            if (mask & (1 << c)) {
+                seen = todo = 1 << c;
+                break;
+            }
+        while (todo) {
+            int c = 0;
+            while (!(todo & (1 << c))) ++c;
+            todo &= ~(1 << c);
+            for (int a = 0; a < 3; ++a) {
+                const int d = c ^ (1 << a);
+                if ((mask & (1 << d)) && !(seen & (1 << d))) seen |= 1 << d, todo |= 1 << d;
+            }
+        }
+        return seen == mask;
+    };
+    auto corner_point = [](int c) { return 2 * (c & 1) + 6 * ((c >> 1) & 1) + 18 * (c >> 2); };
+    // the QEF of the planes x = p.x, y = p.y, z = p.z, summed by hand: minimiser p, Q(p) = 0
+    auto axis_planes = [](const glm::dvec3& p) {
+        Qef q;
+        q.ata[0] = q.ata[3] = q.ata[5] = 1.0;
+        q.atb = p;
+        q.btb = glm::dot(p, p);
+        q.mass_sum = 3.0 * p;
+        q.count = 3;
+        return q;
+    };
+    Lcg rng(2026);
+    std::size_t cases = 0, wrong = 0;
+    std::ostringstream first;
+    for (int m = 0; m < 256; ++m) {
+        for (int variant = 0; variant < 4; ++variant) {
+            // the 27 signs: corners from m; every other point the sign of one of its feature's corners (chosen at
+            // random), except in variant 3 one point whose feature's corners all agree gets the other sign
+            std::uint32_t in = 0;
+            int stray = -1;
+            for (int p = 0; p < 27; ++p) {
+                const int fc = feature_corners(p);
+                int pick = int(rng.uniform() * 8.0), c = 0;
+                for (int k = 0;; k = (k + 1) % 8)
+                    if ((fc >> k) & 1 && pick-- <= 0) {
+                        c = k;
+                        break;
+                    }
+                if ((m >> c) & 1) in |= 1u << p;
+            }
+            if (variant == 3) {
+                std::vector<int> uniform_features;
+                for (int p = 0; p < 27; ++p) {
+                    const int fc = feature_corners(p);
+                    if (p == corner_point(std::countr_zero(unsigned(fc))) && std::popcount(unsigned(fc)) == 1) continue;
+                    if ((m & fc) == 0 || (m & fc) == fc) uniform_features.push_back(p);
+                }
+                if (uniform_features.empty()) continue;
+                stray = uniform_features[std::size_t(rng.uniform() * double(uniform_features.size()))];
+                in ^= 1u << stray;
+            }
+            Octree t;
+            t.init_cartesian(*dummy, 1, lo, 2.0);
+            const std::uint32_t first_child = t.split(0);
+            int vertices = 0;
+            for (int child = 0; child < 8; ++child) {
+                OctreeNode& ch = t.nodes[first_child + child];
+                int signs = 0;
+                for (int c = 0; c < 8; ++c) {
+                    const glm::ivec3 q = glm::ivec3(child & 1, (child >> 1) & 1, child >> 2) +
+                                         glm::ivec3(c & 1, (c >> 1) & 1, c >> 2);
+                    signs |= int((in >> (q.x + 3 * q.y + 9 * q.z)) & 1u) << c;
+                }
+                ch.signs = std::uint8_t(signs);
+                ch.vertex = invalid_index;
+                if (signs == 0 || signs == 0xff) continue;
+                ch.vertex = std::uint32_t(t.vertices.size());
+                t.vertices.push_back({centre + glm::dvec3(child & 1 ? 0.5 : -0.5, child & 2 ? 0.5 : -0.5,
+                                                          child & 4 ? 0.5 : -0.5),
+                                      axis_planes(centre)});
+                ++vertices;
+            }
+            // what Ju et al.'s tests decide, computed here
+            bool agree = true;
+            for (int p = 0; p < 27; ++p) {
+                const int fc = feature_corners(p), on = int((in >> p) & 1u);
+                if (!(on ? (m & fc) : (~m & fc))) agree = false;
+            }
+            const bool sheet = connected(m) && connected(~m & 0xff);
+            const bool collapse = sheet && agree && (vertices == 0 || (m != 0 && m != 0xff));
+            const std::size_t collapses = simplify(t, 1e-6, 0.01);  // Q = 0 up to rounding
+            ++cases;
+            const OctreeNode& root = t.nodes[0];
+            bool ok = collapses == (collapse ? 1u : 0u) && root.is_leaf() == collapse;
+            if (ok && collapse) {
+                ok = root.signs == m && (root.vertex == invalid_index) == (vertices == 0);
+                if (ok && vertices > 0) {
+                    ok = root.vertex < t.vertices.size() && t.vertices[root.vertex].qef.count == 3 * vertices &&
+                         glm::length(t.vertices[root.vertex].position - centre) < 1e-12;
+                }
+            }
+            if (!ok && wrong++ < 3) {
+                first << "\n  corners inside " << std::bitset<8>(unsigned(m)) << " (bit c = corner c), the 27 signs "
+                      << std::bitset<27>(in) << " (bit i + 3j + 9k)";
+                if (stray >= 0) first << " with point " << stray << " on neither side of its feature's corners";
+                first << ": one sheet " << (sheet ? "yes" : "no") << ", every point agrees with a corner of its "
+                      << "feature " << (agree ? "yes" : "no") << "; expected " << (collapse ? "a collapse" : "no collapse")
+                      << ", got " << collapses << " collapses, root " << (root.is_leaf() ? "a leaf" : "not a leaf");
+                if (root.is_leaf())
+                    first << " with signs " << std::bitset<8>(root.signs) << ", vertex "
+                          << (root.vertex == invalid_index ? std::string("none")
+                                                           : root.vertex < t.vertices.size()
+                                                                 ? str(t.vertices[root.vertex].position)
+                                                                 : std::string("out of range"));
+            }
+        }
+    }
+    INFO(cases << " trees of one parent and 8 finest children (signs written by the test; each child with a "
+               "sign change has a vertex whose QEF is the 3 axis planes through the parent's centre)");
+    CHECK_MESSAGE(wrong == 0, wrong << " trees were simplified wrongly" << first.str());
+    // test (3): the same planes through a point outside the parent (by a tenth of its side, below or above it on one
+    // axis) or inside it, corner 0 inside and every other sub-lattice point outside
+    const glm::dvec3 targets[] = {centre, lo + glm::dvec3(0.3, -0.2, 1.1), lo + glm::dvec3(1.7, 1.2, 2.2),
+                                  lo + glm::dvec3(2.2, 1.0, 1.0), lo + glm::dvec3(0.01, 1.99, 0.5)};
+    for (const glm::dvec3& target : targets) {
+        Octree t;
+        t.init_cartesian(*dummy, 1, lo, 2.0);
+        const std::uint32_t first_child = t.split(0);
+        t.nodes[first_child].signs = 1;  // corner 0 of child 0 (the parent's corner 0) inside
+        t.nodes[first_child].vertex = 0;
+        t.vertices.push_back({lo + glm::dvec3(0.5), axis_planes(target)});
+        const bool in_cell = box_outside(Box{lo, lo + glm::dvec3(2.0)}, target) == 0.0;
+        const std::size_t collapses = simplify(t, 1e-6, 0.01);
+        INFO("corner 0 inside; the merged QEF's minimiser " << str(target) << " is "
+                                                            << (in_cell ? "inside" : "outside") << " the parent cell "
+                                                            << str(lo) << " + [0, 2]^3; got " << collapses
+                                                            << " collapses");
+        CHECK(collapses == (in_cell ? 1u : 0u));
+        if (in_cell && t.nodes[0].is_leaf() && t.nodes[0].vertex < t.vertices.size())
+            CHECK(glm::length(t.vertices[t.nodes[0].vertex].position - target) < 1e-12);
+    }
+    // a merged QEF of a single plane (count 1; its minimiser is the mass point, inside): a collapse; a child with a
+    // sign change whose vertex has an empty QEF, or no vertex at all: no minimiser, no collapse
+    for (int kind = 0; kind < 3; ++kind) {
+        Octree t;
+        t.init_cartesian(*dummy, 1, lo, 2.0);
+        const std::uint32_t first_child = t.split(0);
+        t.nodes[first_child].signs = 1;
+        if (kind < 2) {
+            t.nodes[first_child].vertex = 0;
+            Qef q;
+            if (kind == 0) {  // the plane x = centre.x through the centre, by hand
+                q.ata[0] = 1.0;
+                q.atb = {centre.x, 0.0, 0.0};
+                q.btb = centre.x * centre.x;
+                q.mass_sum = centre;
+                q.count = 1;
+            }
+            t.vertices.push_back({lo + glm::dvec3(0.5), q});
+        }
+        const std::size_t collapses = simplify(t, 1e-6, 0.01);
+        const char* what[] = {"one plane through the centre (count 1)", "an empty QEF (count 0)", "no vertex"};
+        INFO("corner 0 inside; the child with the sign change has " << what[kind] << "; got " << collapses
+                                                                    << " collapses");
+        CHECK(collapses == (kind == 0 ? 1u : 0u));
+    }
+}
+
 }  // TEST_SUITE
 
 TEST_SUITE("Task 6: contouring polygons") {
 
-TEST_CASE("contour: sphere and torus give closed oriented 2-manifolds (chi 2 and 0)" * geolab::points(2) *
+TEST_CASE("contour: sphere and torus give closed oriented 2-manifolds (chi 2 and 0)" * geolab::points(1) *
           geolab::hint("One polygon per sign-changing minimal edge, through the vertices of the 4 leaves around "
                        "it (locate at the edge midpoint +- half a finest cell), each edge once. Handout §5.3.")) {
     const FieldPtr sphere = geolab::sphere({0.02, -0.03, 0.05}, 0.7), torus = geolab::torus({0, 0, 0}, 0.6, 0.25);
@@ -353,6 +549,59 @@ TEST_CASE("contour: winding follows the sign (outward normals; the inside-out fi
         }
         CHECK_MESSAGE(against == 0, (k ? "inside-out torus: " : "torus: ")
                                         << against << " of " << s.n_faces() << " triangles face against grad f");
+    }
+}
+
+TEST_CASE("contour: exactly the contract's triangles on uniform and adaptive Cartesian trees (edge by edge)" *
+          geolab::points(1) *
+          geolab::hint("For every sign-changing minimal edge: the leaves in the quadrants (-,-), (+,-), (+,+), (-,+) "
+                       "of the other two axes (b, c) = (a+1, a+2) mod 3, in that order when the edge's lower end is "
+                       "inside, reversed otherwise; repeated leaves dropped (a triangle); a quad split along its "
+                       "SHORTER diagonal. Adaptive trees: an edge is minimal when no leaf around it is smaller; emit it "
+                       "once. Handout §5.3.")) {
+    struct Case {
+        FieldPtr f;
+        int level, collapse_from;  // collapse_from > level: no collapse (a uniform band of finest leaves)
+        const char* what;
+    };
+    const LatticeBox lbox(5, 0.05, {6, 9, 11}, {25, 20, 23});
+    const FieldPtr lattice_box(&lbox, [](const ScalarField*) {});
+    // a sphere whose bounds() claim less than it is: the domain cube cuts it (edges at the domain's faces have
+    // quadrants outside the domain: no polygon there, the surface stays open)
+    struct Cropped final : ScalarField {
+        FieldPtr f = geolab::sphere({0.1, -0.05, 0.08}, 0.8);
+        double value(const glm::dvec3& p) const override { return f->value(p); }
+        glm::dvec3 gradient(const glm::dvec3& p) const override { return f->gradient(p); }
+        Box bounds() const override { return {glm::dvec3(-0.55, -0.6, -0.5), glm::dvec3(0.65, 0.5, 0.6)}; }
+        double lipschitz() const override { return 1.0; }
+    };
+    const FieldPtr cropped = std::make_shared<Cropped>();
+    const Case cases[] = {
+        {geolab::sphere({0.02, -0.03, 0.05}, 0.7), 4, 9, "sphere r = 0.7, level 4"},
+        {geolab::torus({0.01, 0.02, -0.03}, 0.6, 0.25), 5, 9, "torus, level 5"},
+        {lattice_box, 5, 9, "box with faces on lattice planes (equal diagonals), level 5"},
+        {geolab::named_implicit("csg"), 5, 3, "csg, level 5, cells of levels 3-4 merged where the sign tests allow"},
+        {geolab::named_implicit("rounded_box"), 5, 2, "rounded box, level 5, cells of levels 2-4 merged"},
+        {geolab::sphere({0.05, 0.02, -0.04}, 0.75), 5, 3, "sphere r = 0.75, level 5, cells of levels 3-4 merged"},
+        {cropped, 4, 9, "sphere r = 0.8 cut by the domain cube (an open surface), level 4"},
+        {cropped, 5, 3, "sphere r = 0.8 cut by the domain cube, level 5, cells of levels 3-4 merged"},
+    };
+    for (const Case& cs : cases) {
+        Octree t = given_octree(*cs.f, cs.level);
+        given_vertices(t);
+        const std::size_t merged = cs.collapse_from <= cs.level ? given_collapse(t, cs.collapse_from) : 0;
+        const ReferenceContour ref = reference_contour(t);
+        INFO(cs.what << ": " << merged << " cells merged (without your simplify); " << ref.edges
+                     << " sign-changing minimal edges, " << ref.tie_quads.size() << " quads with equal diagonals");
+        REQUIRE(ref.no_vertex.empty());
+        REQUIRE(ref.edges > 0);
+        if (cs.collapse_from <= cs.level) REQUIRE(merged > 0);
+        PolygonSoup s;
+        REQUIRE_NOTHROW(s = contour(t));
+        const std::string diff = compare_polygons(s, ref);
+        CHECK_MESSAGE(diff.empty(), diff);
+        const std::size_t used = edge_report(s).referenced_vertices;
+        CHECK_MESSAGE(used == s.n_vertices(), s.n_vertices() << " positions in the soup, " << used << " used by faces");
     }
 }
 

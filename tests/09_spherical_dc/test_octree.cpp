@@ -59,25 +59,26 @@ TEST_CASE("build_octree: refines exactly the cells allowed by the conservative t
                        "the largest |grad f| at the 9^3 points lo + side/8 (i, j, k). Use Octree::split so "
                        "children follow the c = cx + 2cy + 4cz order. Handout §4.2.")) {
     const FieldPtr torus = geolab::torus({0.05, 0.0, -0.1}, 0.6, 0.25);
-    // and a field without a Lipschitz constant: Lf = 2 max |grad f| on the 9^3 lattice of the domain cube
-    const QuadraticBall quadratic({0.1, -0.2, 0.05}, 0.6);
-    for (int k = 0; k < 2; ++k) {
-        const ScalarField& f = k == 0 ? *torus : static_cast<const ScalarField&>(quadratic);
-        const int L = 5;
-        const Octree t = build_octree(f, params(L));
-        const double lf = k == 0 ? f.lipschitz() : quadratic.estimate(t.min_corner, t.size);
+    // and fields without a Lipschitz constant: Lf = 2 max |grad f| on the 9^3 lattice of the domain cube. |grad f| =
+    // 2 |p - c| is largest at the lattice corner farthest from c: any corner when the domain is centred on c; the
+    // corner (0, 8, 0) or (8, 0, 8) of the lattice with the larger bounds; and below 1 everywhere for a tiny ball
+    const glm::dvec3 c1(0.3, -0.1, 0.2), c2(-0.2, 0.15, 0.1);
+    const QuadraticBall quadratics[] = {
+        QuadraticBall({0.1, -0.2, 0.05}, 0.6),
+        QuadraticBall(c1, 0.5, Box{c1 - glm::dvec3(1.1, 0.5, 0.9), c1 + glm::dvec3(0.5, 1.1, 0.5)}),
+        QuadraticBall(c2, 0.5, Box{c2 - glm::dvec3(0.5, 1.1, 0.5), c2 + glm::dvec3(1.1, 0.5, 0.9)}),
+        QuadraticBall({0.02, 0.01, -0.03}, 0.05)};
+    // every reachable node against the rule |f(c)| <= lf * half diagonal, from its centre sample
+    auto check_rule = [](const Octree& t, const ScalarField& f, double lf, const std::string& what, bool sparse) {
+        const int L = t.max_level;
         const TreeShape shape = tree_shape(t);
-        INFO((k == 0 ? std::string("torus R = 0.6, r = 0.25")
-                     : "f = |p - c|^2 - 0.36, c = (0.1, -0.2, 0.05), no Lipschitz constant (expected estimate Lf = " +
-                           std::to_string(lf) + ")")
-             << ", level " << L << ": " << shape.leaves.size() << " leaves");
+        INFO(what << ", level " << L << ": " << shape.leaves.size() << " leaves; expected Lf = " << lf);
         REQUIRE(shape.leaves.size() > 8);
         CHECK(shape.bad_children == 0);
         CHECK(shape.deeper_than_max == 0);
         double volume = 0;
         const double h = t.size / t.resolution();
         std::size_t too_coarse = 0, too_fine = 0;
-        // every reachable node: the rule, from its centre sample
         std::vector<std::uint32_t> stack{0};
         while (!stack.empty()) {
             const std::uint32_t n = stack.back();
@@ -99,7 +100,50 @@ TEST_CASE("build_octree: refines exactly the cells allowed by the conservative t
                                                      "diagonal (they may contain the surface and must be split)");
         CHECK_MESSAGE(too_fine == 0, too_fine << " nodes were split although |f(c)| > Lf * half diagonal (over-refined)");
         CHECK(std::abs(volume - std::pow(t.size, 3)) < 1e-9 * std::pow(t.size, 3));
-        if (k == 0) CHECK(shape.leaves.size() < std::size_t(1) << (3 * L - 2));
+        if (sparse) CHECK(shape.leaves.size() < std::size_t(1) << (3 * L - 2));
+    };
+    for (int k = 0; k < 5; ++k) {
+        const ScalarField& f = k == 0 ? *torus : static_cast<const ScalarField&>(quadratics[k - 1]);
+        const Octree t = build_octree(f, params(5));
+        const double lf = k == 0 ? f.lipschitz() : quadratics[k - 1].estimate(t.min_corner, t.size);
+        std::ostringstream what;
+        if (k == 0) what << "torus R = 0.6, r = 0.25";
+        else
+            what << "f = |p - c|^2 - r^2, c = " << str(quadratics[k - 1].c_) << ", r = " << quadratics[k - 1].r_
+                 << ", bounds " << str(f.bounds().lo) << " - " << str(f.bounds().hi) << ", no Lipschitz constant";
+        check_rule(t, f, lf, what.str(), k == 0);
+    }
+    // exactly the 9^3 points lo + side/8 (i, j, k), i, j, k = 0..8: a gradient 1000 times too long at one of them
+    // (a corner of the lattice) must be seen, and at points beside the lattice (index 9 or -1 on one axis, a half
+    // index, far outside) must not
+    const glm::dvec3 c(0.1, -0.05, 0.02);
+    const double r = 0.6;
+    const auto [lo, side] = cartesian_domain(SpikyGradient(c, r, glm::dvec3(1e9)), 0.05);
+    auto at = [&, lo = lo, side = side](double i, double j, double k) { return lo + side / 8.0 * glm::dvec3(i, j, k); };
+    std::vector<glm::dvec3> lattice;
+    for (int i = 0; i <= 8; ++i)
+        for (int j = 0; j <= 8; ++j)
+            for (int k = 0; k <= 8; ++k) lattice.push_back(at(i, j, k));
+    struct Spike {
+        glm::dvec3 p;
+        double scale;
+        const char* what;
+    };
+    const Spike spikes[] = {{at(0, 0, 0), 1.0, "lattice index (0, 0, 0)"},
+                            {at(8, 8, 8), 1.0, "lattice index (8, 8, 8)"},
+                            {at(9, 4, 4), 1.0, "index (9, 4, 4), beside the lattice"},
+                            {at(4, 9, 4), 1.0, "index (4, 9, 4), beside the lattice"},
+                            {at(4, 4, 9), 1.0, "index (4, 4, 9), beside the lattice"},
+                            {at(0.5, 0.5, 0.5), 1.0, "index (0.5, 0.5, 0.5), between lattice points"},
+                            {at(-1, -1, -1), 1.0, "index (-1, -1, -1), beside the lattice"},
+                            {at(64, 64, 64), 1.0, "index (64, 64, 64), far outside"},
+                            {glm::dvec3(1e9), 0.1, "nowhere, |grad f| = 0.1 everywhere"}};
+    for (const Spike& sp : spikes) {
+        const SpikyGradient f(c, r, sp.p, sp.scale);
+        const Octree t = build_octree(f, params(4));
+        check_rule(t, f, f.estimate(lattice),
+                   std::string("sphere distance without a Lipschitz constant, |grad f| 1000 times too long at ") + sp.what,
+                   false);
     }
 }
 

@@ -340,6 +340,23 @@ TEST_CASE("dual_contour_spherical: an origin on the surface is corrected and the
     CHECK(std::abs(f->value(st.origin)) >= 2.0 * unit * (1 - 1e-9));
     LAB09_CHECK_CLOSED_MANIFOLD(s, "sphere, corrected origin");
     CHECK(std::abs(enclosed_volume(s) - sphere_volume(0.8)) < 0.02 * sphere_volume(0.8));
+    // bounds that are not a cube (extents 1.8, 1.2, 0.9): the unit is the LARGEST extent / 2^L
+    const glm::dvec3 centre(0.3, -0.2, 0.1), half(0.9, 0.6, 0.45);
+    const FieldPtr box = geolab::box(centre, half);
+    SphericalParams q;
+    q.max_level = 4;
+    q.origin = centre + glm::dvec3(0.9, 0.1, 0.05);  // on the +x face
+    DcStats sb;
+    (void)dual_contour_spherical(*box, q, &sb);
+    const double box_unit = 1.8 / 16;
+    INFO("box about " << str(centre) << " half extents " << str(half) << ", origin on its +x face, level 4: path of "
+                      << sb.origin_path.size() << " positions");
+    REQUIRE(sb.origin_path.size() >= 2);
+    for (std::size_t i = 1; i < sb.origin_path.size(); ++i) {
+        const double step = glm::length(sb.origin_path[i] - sb.origin_path[i - 1]);
+        INFO("step " << i << " is " << step << " long, expected 1.5 * " << box_unit);
+        CHECK(std::abs(step - 1.5 * box_unit) < 1e-9 * box_unit);
+    }
 }
 
 }  // TEST_SUITE

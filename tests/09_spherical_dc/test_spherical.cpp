@@ -104,6 +104,16 @@ TEST_CASE("build_spherical_octree: cells halve r; theta and phi; refinement foll
     CHECK(shape.bad_children == 0);
     CHECK(shape.deeper_than_max == 0);
     check_ball_rule(t, *f, f->lipschitz());
+    // a small sphere near the outer shell on one side: only the root is split whatever the field; the cells of
+    // level 1 on the far side stay leaves (the ball rule from level 1 on)
+    const FieldPtr small = geolab::sphere({0.0, 0.0, 0.9}, 0.08);
+    const Octree u = build_spherical_octree(*small, 4, glm::dvec3(0.0), 0.0, 1.0);
+    std::size_t level1_leaves = 0;
+    for (std::uint32_t li : tree_shape(u).leaves) level1_leaves += u.nodes[li].level == 1;
+    INFO("sphere r = 0.08 at (0, 0, 0.9), origin 0, shell [0, 1], level 4: " << level1_leaves << " leaves of level 1");
+    CHECK(!u.nodes[0].is_leaf());
+    CHECK(level1_leaves > 0);
+    check_ball_rule(u, *small, small->lipschitz());
 }
 
 TEST_CASE("build_spherical_octree: lipschitz() == 0: Lf = 2 max |grad f| on the 9^3 lattice of the shell's cube" *
@@ -133,8 +143,41 @@ TEST_CASE("build_spherical_octree: lipschitz() == 0: Lf = 2 max |grad f| on the 
     // a signed distance without a constant: |grad f| = 1 everywhere, Lf = 2
     const NoLipschitz g(geolab::sphere({0.1, 0.0, -0.1}, 0.7));
     const Octree u = build_spherical_octree(g, 4, glm::dvec3(0.0), 0.0, 1.2);
-    INFO("sphere distance without lipschitz(), level 4: expected Lf = 2");
-    check_ball_rule(u, g, 2.0);
+    {
+        INFO("sphere distance without lipschitz(), level 4: expected Lf = 2");
+        check_ball_rule(u, g, 2.0);
+    }
+    // exactly the 9^3 points origin + r_max (i/4 - 1, j/4 - 1, k/4 - 1): a gradient 1000 times too long at a corner of
+    // that lattice must be seen, and at points beside it (index 9 or -1, a half index, twice r_max away) must not
+    const glm::dvec3 o(0.05, -0.02, 0.03), c(0.1, 0.05, -0.05);
+    const double r_max = 1.1;
+    auto at = [&](double i, double j, double k) { return o + r_max * (glm::dvec3(i, j, k) / 4.0 - 1.0); };
+    std::vector<glm::dvec3> lattice;
+    for (int i = 0; i <= 8; ++i)
+        for (int j = 0; j <= 8; ++j)
+            for (int k = 0; k <= 8; ++k) lattice.push_back(at(i, j, k));
+    struct Spike {
+        glm::dvec3 p;
+        double scale;
+        const char* what;
+    };
+    const Spike spikes[] = {{at(0, 0, 0), 1.0, "lattice index (0, 0, 0)"},
+                            {at(8, 8, 8), 1.0, "lattice index (8, 8, 8)"},
+                            {at(9, 4, 4), 1.0, "index (9, 4, 4), beside the lattice"},
+                            {at(4, 9, 4), 1.0, "index (4, 9, 4), beside the lattice"},
+                            {at(4, 4, 9), 1.0, "index (4, 4, 9), beside the lattice"},
+                            {at(0.5, 0.5, 0.5), 1.0, "index (0.5, 0.5, 0.5), between lattice points"},
+                            {at(-4, -4, -4), 1.0, "origin - 2 r_max (1, 1, 1), beside the lattice"},
+                            {at(12, 12, 12), 1.0, "origin + 2 r_max (1, 1, 1), beside the lattice"},
+                            {glm::dvec3(1e9), 0.1, "nowhere, |grad f| = 0.1 everywhere"}};
+    for (const Spike& sp : spikes) {
+        const SpikyGradient f(c, 0.6, sp.p, sp.scale);
+        const Octree t = build_spherical_octree(f, 4, o, 0.0, r_max);
+        INFO("sphere r = 0.6 at " << str(c) << " (distance, no Lipschitz constant), origin " << str(o) << ", shell [0, "
+                                  << r_max << "], level 4; |grad f| 1000 times too long at " << sp.what
+                                  << ": expected Lf = " << f.estimate(lattice));
+        check_ball_rule(t, f, f.estimate(lattice));
+    }
 }
 
 TEST_CASE("build_spherical_octree: every finest cell the surface passes through is a leaf at max level" *
@@ -486,6 +529,20 @@ TEST_CASE("build_spherical_octree and dual_contour_spherical: bad parameters thr
     p.r_min = 2.0;
     p.r_max = 1.0;
     CHECK_THROWS_AS(dual_contour_spherical(*f, p), std::invalid_argument);
+    // bounds flat along one axis (a zero extent there, the largest extent > 0) are accepted
+    struct FlatBounds final : ScalarField {
+        FieldPtr g = geolab::sphere({0.0, 0.0, 0.0}, 0.5);
+        double value(const glm::dvec3& x) const override { return g->value(x); }
+        glm::dvec3 gradient(const glm::dvec3& x) const override { return g->gradient(x); }
+        Box bounds() const override { return {glm::dvec3(-0.5, -0.5, 0.0), glm::dvec3(0.5, 0.5, 0.0)}; }
+        double lipschitz() const override { return 1.0; }
+    } flat;
+    SphericalParams fp;
+    fp.max_level = 3;
+    PolygonSoup fs;
+    INFO("sphere r = 0.5 with bounds() flat along z, [-0.5, 0.5]^2 x [0, 0]");
+    CHECK_NOTHROW(fs = dual_contour_spherical(flat, fp));
+    CHECK(fs.n_faces() > 0);
 }
 
 }  // TEST_SUITE
@@ -681,6 +738,73 @@ TEST_CASE("fill_poles: hand-built rings get the ghost where the tangent planes m
     CHECK(r.n_faces == 0);
     CHECK(soup.n_faces() == 1);
     CHECK(soup.n_vertices() == std::size_t(2 * n));
+
+    // gradients of any length (n = grad f / |grad f|), one ring vertex without a gradient (no plane from it), and
+    // tangent planes nearly parallel to the axis on both sides of the fallback sum (n.a)^2 < 1e-12 * ring size:
+    // a field that returns the gradient given for the nearest ring vertex
+    struct Prescribed final : ScalarField {
+        std::vector<glm::dvec3> at, grad;
+        double value(const glm::dvec3&) const override { return 0.0; }
+        glm::dvec3 gradient(const glm::dvec3& p) const override {
+            std::size_t best = 0;
+            for (std::size_t i = 1; i < at.size(); ++i)
+                if (glm::length(p - at[i]) < glm::length(p - at[best])) best = i;
+            return grad[best];
+        }
+        Box bounds() const override { return {glm::dvec3(-3.0), glm::dvec3(3.0)}; }
+    };
+    struct Ring {
+        const char* what;
+        double axis_component;  // n.a of every normal (0: tilted normals of varying lengths, one zero gradient)
+    };
+    const Ring cases[] = {{"tilted normals, gradients 0.5 to 9 long, one vertex with a zero gradient", 0.0},
+                          {"normals with (n.a)^2 = 1.5e-12: the sum is above 1e-12 * size", std::sqrt(1.5e-12)},
+                          {"normals with (n.a)^2 = 0.5e-12: the sum is below 1e-12 * size", std::sqrt(0.5e-12)}};
+    for (const Ring& rc : cases) {
+        Prescribed field;
+        PolygonSoup ring_soup;
+        PoleRing pr;
+        pr.north = true;
+        pr.r_lo = 0.5;
+        pr.r_hi = rc.axis_component == 0.0 ? 2.0 : 1.0;  // the tilted planes meet the axis near 1.1: not clamped
+        const int m = 10;
+        double num = 0, den = 0, mean = 0;
+        for (int i = 0; i < m; ++i) {
+            const double phi = 2 * kPi * i / m, z = 0.7 + 0.02 * (i % 4), rho_i = 0.3 + 0.01 * i;
+            const glm::dvec3 v = o + glm::dvec3(rho_i * std::cos(phi), rho_i * std::sin(phi), z);
+            glm::dvec3 nrm;
+            double length = 1.0;
+            if (rc.axis_component == 0.0) {
+                nrm = glm::normalize(glm::dvec3(std::cos(phi), std::sin(phi), 0.8 + 0.1 * (i % 3)));
+                length = i == 3 ? 0.0 : 0.5 + i;
+            } else {
+                const double c = rc.axis_component;
+                nrm = glm::dvec3(std::sqrt(1 - c * c) * std::cos(phi), std::sqrt(1 - c * c) * std::sin(phi), c);
+                length = 2.0 + i;
+            }
+            field.at.push_back(v);
+            field.grad.push_back(length * nrm);
+            pr.ring.push_back(std::uint32_t(ring_soup.positions.size()));
+            ring_soup.positions.push_back(v);
+            mean += z / m;
+            if (length > 0.0) {
+                const glm::dvec3 u = field.grad.back() / glm::length(field.grad.back());
+                num += u.z * glm::dot(u, v - o);
+                den += u.z * u.z;
+            }
+        }
+        const double expected = std::clamp(den >= 1e-12 * m ? num / den : mean, pr.r_lo, pr.r_hi);
+        const std::vector<PoleRing> one{pr};
+        const PoleFillResult got = fill_poles(ring_soup, one, field, o, PoleFill::normal_projection);
+        INFO("normal_projection, a ring of " << m << " vertices: " << rc.what << "; expected the ghost at axial "
+                                             << "coordinate " << expected << " (sum (n.a)^2 = " << den << ")");
+        REQUIRE(got.ghost_vertices.size() == 1);
+        REQUIRE(got.ghost_vertices[0] < ring_soup.n_vertices());
+        const glm::dvec3 ghost = ring_soup.positions[got.ghost_vertices[0]];
+        INFO("got " << str(ghost));
+        if (rc.axis_component == 0.0) REQUIRE((expected > pr.r_lo && expected < pr.r_hi));
+        CHECK(glm::length(ghost - (o + glm::dvec3(0, 0, expected))) < 1e-9);
+    }
 }
 
 }  // TEST_SUITE

@@ -1,8 +1,13 @@
-// replay FILE|DIR...: every corpus file through the reader for its extension (.obj .off .ply .stl; .mesh and
-// .node/.ele/.face volume meshes, read and checked only; .soup files
-// are build_mesh inputs, decoded as the build_mesh fuzz target does), then, when it reads, through build_mesh.
-// A clean rejection (IoError, TopologyError, check_soup's std::invalid_argument, NotImplemented from a stub) or
-// success is fine; any other exception fails the run. A crash or a hang fails it through ctest (TIMEOUT).
+// replay FILE|DIR...: every corpus file through the reader for its extension, then, for a surface that reads,
+// through build_mesh:
+//   .obj .off .ply .stl   read_mesh_from_string, then lab 01's build_mesh
+//   .soup                 build_mesh inputs, decoded as the build_mesh fuzz target does
+//   .mesh, .node          lab 02's volume formats (a TetGen mesh from its .node with .ele and .face), read and checked
+//   .bpt                  lab 05's Bézier patches; .ttf a font, lab 05's glyph reader on a few code points
+//   .scad                 lab 07's OpenSCAD subset
+//   .json                 lab 04's blob scenes (the reader of geolab blobby, tools/geolab/blobby_scene.hpp)
+// A clean rejection (IoError, ParseError, TopologyError, check_soup's std::invalid_argument, NotImplemented from a
+// stub) or success is fine; any other exception fails the run. A crash or a hang fails it through ctest (TIMEOUT).
 // Prints one line per file with its outcome and time, then "N passed, M failed".
 #include <algorithm>
 #include <chrono>
@@ -15,6 +20,8 @@
 #include <typeinfo>
 #include <vector>
 
+#include "blobby_scene.hpp"
+#include "geolab/bezier_data.hpp"
 #include "geolab/halfedge.hpp"
 #include "geolab/io.hpp"
 #include "geolab/scad.hpp"
@@ -37,16 +44,41 @@ std::string replay(const fs::path& p) {
     // OpenSCAD scenes (lab 07's subset reader): parsed; a ParseError is the clean rejection.
     if (p.extension() == ".scad") {
         try {
-            const geolab::scad::Scene s = geolab::scad::parse(read_bytes(p), p.filename().string());
+            const geolab::scad::Scene s = geolab::scad::read(p.string());
             return "parsed " + std::to_string(s.nodes.size()) + " nodes";
         } catch (const geolab::scad::ParseError& e) {
+            return std::string("rejected: ") + e.what();
+        }
+    }
+    if (p.extension() == ".bpt") {
+        try {
+            return "read " + std::to_string(geolab::read_bpt(p.string()).size()) + " patches";
+        } catch (const geolab::IoError& e) {
+            return std::string("rejected: ") + e.what();
+        }
+    }
+    if (p.extension() == ".ttf") {
+        std::string out;
+        for (char32_t c : {U'A', U'g', U'&'}) {
+            try {
+                out += std::to_string(geolab::read_glyph(p.string(), c).contours.size()) + " contours; ";
+            } catch (const geolab::IoError& e) {
+                out += std::string("rejected: ") + e.what() + "; ";
+            }
+        }
+        return out;
+    }
+    if (p.extension() == ".json") {
+        try {
+            return "read " + std::to_string(geolab::cli::read_blob_scene(p.string()).blobs.size()) + " blobs";
+        } catch (const geolab::IoError& e) {
             return std::string("rejected: ") + e.what();
         }
     }
     if (p.extension() == ".mesh" || p.extension() == ".node") {
         try {
             const geolab::VolumeMesh m = p.extension() == ".mesh"
-                                             ? geolab::read_medit_from_string(read_bytes(p), p.filename().string())
+                                             ? geolab::read_medit(p)
                                              : geolab::read_tetgen(p);
             geolab::check_volume_mesh(m);
             return "read " + std::to_string(m.n_vertices()) + " vertices, " + std::to_string(m.n_cells()) + " cells";

@@ -1,7 +1,11 @@
 // Replays every file of the .binvox corpus (tests/fuzz/corpus-binvox/) through lab 08's decode_binvox (the reference
 // in the instructor's tree): each must decode or throw geolab::IoError — no crash, no hang, no other exception, and
-// no huge allocation (the ctest runs under a 512 MiB address-space cap). Prints one line a file; exit 1 on a failure.
+// no huge allocation (the ctest runs under a 512 MiB address-space cap). Then read_binvox (the file wrapper) on a
+// FIFO, a symlink to /dev/zero and a directory made in a scratch folder: each refused with an IoError naming it
+// (before: the FIFO blocked forever, /dev/zero grew without bound). Prints one line a file; exit 1 on a failure.
 #include <sys/resource.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -37,6 +41,28 @@ int main(int argc, char** argv) {
             ++failures;
         }
     }
-    std::cout << files.size() << " files, " << failures << " failures\n";
+    const std::filesystem::path scratch =
+        std::filesystem::temp_directory_path() / ("geolab_replay_binvox_" + std::to_string(::getpid()));
+    std::filesystem::create_directories(scratch);
+    const std::filesystem::path fifo = scratch / "fifo.binvox", zero = scratch / "zero.binvox", dir = scratch / "dir.binvox";
+    ::mkfifo(fifo.c_str(), 0600);
+    std::filesystem::create_symlink("/dev/zero", zero);
+    std::filesystem::create_directory(dir);
+    for (const auto& f : {fifo, zero, dir}) {
+        try {
+            (void)geolab::voxels::read_binvox(f);
+            std::cout << "FAILED " << f.string() << ": read\n";
+            ++failures;
+        } catch (const geolab::IoError& e) {
+            const bool named = std::string(e.what()).find(f.string()) != std::string::npos;
+            std::cout << (named ? "error  " : "FAILED (not named) ") << e.what() << "\n";
+            failures += !named;
+        } catch (const std::exception& e) {
+            std::cout << "FAILED " << f.string() << ": not an IoError: " << e.what() << "\n";
+            ++failures;
+        }
+    }
+    std::filesystem::remove_all(scratch);
+    std::cout << files.size() + 3 << " files, " << failures << " failures\n";
     return failures == 0 ? 0 : 1;
 }

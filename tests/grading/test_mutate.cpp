@@ -164,6 +164,57 @@ TEST_CASE("schema: the code outside the sites is unchanged; every chosen mutant 
     std::set<int> spanned;
     for (const auto& s : spans) spanned.insert(s.id);
     CHECK(spanned == all);
-    // nothing chosen: the file itself after the preamble
-    CHECK(file.schema({}) == mut::schema_preamble() + text);
+    // nothing chosen: the file itself after the preamble, then the line that marks the end of its start-up
+    const std::string none = file.schema({});
+    CHECK(none.rfind(mut::schema_preamble() + text, 0) == 0);
+    CHECK(none.substr(mut::schema_preamble().size() + text.size()) ==
+          "\nstatic const bool geolab_mutant_started = geolab_mutant_rt::started(0, " +
+              std::to_string(file.mutants().size() - 1) + ");\n");
+}
+
+TEST_CASE("sites: an array bound in a declaration is a constant; a subscript after a product is not") {
+    const std::string text = block("double f(const double* a, double x) {\n"
+                                   "  const double* rows[2] = {a, a};\n"
+                                   "  double b[3] = {1, 2, 3};\n"
+                                   "  return a[0] * a[4] + x * b[1] + 2 * rows[1][0];\n"
+                                   "}");
+    const auto ms = mutants_of(text);
+    for (const auto& m : ms) {
+        const bool bound = (m.line == 3 && m.original == "2") || (m.line == 4 && m.original == "3" && m.col < 15);
+        if (bound) CHECK_MESSAGE(!m.schema_ok, m.key() << " is an array bound: rebuilt alone");
+        if (m.line == 4 && !bound) CHECK_MESSAGE(m.schema_ok, m.key() << " is an initializer's value: in the schema");
+        if (m.line == 5) CHECK_MESSAGE(m.schema_ok, m.key() << " is an ordinary subscript: in the schema");
+    }
+    const auto c = changes(ms);
+    CHECK(has(c, "4 -> 5"));  // a[4]
+    CHECK(has(c, "1 -> 2"));
+}
+
+TEST_CASE("schema: a relaxed schema computes constexpr tables at start-up and digests them") {
+    const std::string text = "namespace geolab::dc {\nnamespace {\n" +
+                             block("struct T { int v[4] = {}; };\n"
+                                   "constexpr T make() {\n  T t;\n  for (int i = 1; i < 4; ++i) t.v[i] = i * i;\n  return t;\n}\n"
+                                   "constexpr T table = make(), other = make();\n"
+                                   "constexpr int qb[2] = {-1, +1}, qc[2] = {1, 2};\n"
+                                   "int f(int i) {\n  constexpr int local = 3;\n  return table.v[i & local] + qb[i & 1];\n}") +
+                             "}\n}\n";
+    const mut::SourceFile file("src/x.cpp", text, mut::Vocabulary::standard(), 0);
+    std::set<int> relaxed, all;
+    for (const auto& m : file.mutants()) {
+        all.insert(m.id);
+        if (m.needs_relax) relaxed.insert(m.id);
+    }
+    CHECK(relaxed.size() >= 4);  // the loop's 1, <, 4, * at least
+    const std::string body = file.schema(all, nullptr, true).substr(mut::schema_preamble().size());
+    CHECK(body.find("inline T make()") != std::string::npos);      // a constexpr function: inline
+    CHECK(body.find("const T table = make()") != std::string::npos);  // a constexpr variable: const
+    CHECK(body.find("constexpr") == std::string::npos);
+    // each namespace-scope table (both declarators of a declaration) is digested after it; the local one is not
+    for (const char* name : {"table", "other", "qb", "qc"})
+        CHECK(body.find(std::string("geolab_mutant_rt::table(&") + name + ", sizeof(" + name + "))") != std::string::npos);
+    CHECK(body.find("table(&local") == std::string::npos);
+    // not relaxed: constexpr stays, nothing is digested
+    const std::string strict = file.schema({}, nullptr, false);
+    CHECK(strict.find("constexpr T make()") != std::string::npos);
+    CHECK(strict.find("geolab_mutant_rt::table(&") == std::string::npos);
 }

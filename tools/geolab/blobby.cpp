@@ -1,20 +1,11 @@
 // geolab blobby SCENE.json --res N --out mesh.obj: a blob scene (lab 04) sampled and polygonized by marching cubes.
 // Runs the variant being built (the reference in the instructor's tree, the student's code in the release).
-//
-// The scene format (JSON):
-//   { "kernel": "wyvill",            // "blinn", "nishimura" or "wyvill"
-//     "threshold": 0.5,              // T > 0
-//     "blobs": [ { "center": [0, 0, 0], "strength": 1.0, "radius": 1.0, "a": 1.0 }, ... ] }
-// strength (b, default 1; negative subtracts), radius (R of nishimura and wyvill, default 1), a (Blinn's falloff,
-// default 1). Unknown keys are errors (a misspelt key would otherwise be silently ignored).
+// The scene format (JSON) and its reader: blobby_scene.hpp.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <fstream>
 #include <iostream>
 #include <memory>
-#include <set>
-#include <sstream>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -23,6 +14,7 @@
 #include "geolab/errors.hpp"
 #include "geolab/io.hpp"
 #ifdef GEOLAB_HAS_LAB_04
+#include "blobby_scene.hpp"
 #include "geolab/blobby.hpp"
 #endif
 
@@ -33,81 +25,32 @@ void add_blobby(CLI::App& app, int& status);
 #ifdef GEOLAB_HAS_LAB_04
 namespace {
 
-using nlohmann::json;
-
-[[noreturn]] void fail(const std::string& file, const std::string& where, const std::string& reason) {
-    throw std::runtime_error(file + ": " + where + ": " + reason);
-}
-
-double number(const std::string& file, const json& j, const std::string& where) {
-    if (!j.is_number()) fail(file, where, "expected a number, got " + std::string(j.type_name()));
-    const double v = j.get<double>();
-    if (!std::isfinite(v)) fail(file, where, "not finite");
-    return v;
-}
-
-blobby::BlobScene parse_scene(const std::string& file) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) throw IoError(file, 0, "cannot open the file");
-    std::stringstream ss;
-    ss << in.rdbuf();
-    const std::string text = ss.str();
-    json j;
-    try {
-        j = json::parse(text);
-    } catch (const json::parse_error& e) {
-        const std::size_t at = std::min<std::size_t>(e.byte == 0 ? 0 : e.byte - 1, text.size());
-        const std::size_t line = 1 + std::size_t(std::count(text.begin(), text.begin() + long(at), '\n'));
-        throw IoError(file, line, std::string("not valid JSON: ") + e.what());
-    }
-    if (!j.is_object()) fail(file, "top level", "expected an object with \"kernel\", \"threshold\" and \"blobs\"");
-    for (const auto& [k, v] : j.items())
-        if (k != "kernel" && k != "threshold" && k != "blobs") fail(file, "key \"" + k + "\"", "unknown (kernel, threshold, blobs)");
-    blobby::BlobScene s;
-    if (!j.contains("kernel") || !j["kernel"].is_string()) fail(file, "kernel", "expected \"blinn\", \"nishimura\" or \"wyvill\"");
-    const std::string k = j["kernel"].get<std::string>();
-    if (k == "blinn") s.kernel = blobby::Kernel::blinn;
-    else if (k == "nishimura") s.kernel = blobby::Kernel::nishimura;
-    else if (k == "wyvill") s.kernel = blobby::Kernel::wyvill;
-    else fail(file, "kernel", "\"" + k + "\" is not one of blinn, nishimura, wyvill");
-    if (!j.contains("threshold")) fail(file, "threshold", "missing");
-    s.threshold = number(file, j["threshold"], "threshold");
-    if (!(s.threshold > 0)) fail(file, "threshold", "must be > 0");
-    if (!j.contains("blobs") || !j["blobs"].is_array() || j["blobs"].empty())
-        fail(file, "blobs", "expected a non-empty array of blobs");
-    for (std::size_t i = 0; i < j["blobs"].size(); ++i) {
-        const json& b = j["blobs"][i];
-        const std::string where = "blobs[" + std::to_string(i) + "]";
-        if (!b.is_object()) fail(file, where, "expected an object");
-        for (const auto& [key, v] : b.items())
-            if (key != "center" && key != "strength" && key != "radius" && key != "a")
-                fail(file, where + ".\"" + key + "\"", "unknown key (center, strength, radius, a)");
-        blobby::Blob blob;
-        if (!b.contains("center") || !b["center"].is_array() || b["center"].size() != 3)
-            fail(file, where + ".center", "expected [x, y, z]");
-        for (int a = 0; a < 3; ++a) blob.center[a] = number(file, b["center"][a], where + ".center[" + std::to_string(a) + "]");
-        if (b.contains("strength")) blob.strength = number(file, b["strength"], where + ".strength");
-        if (b.contains("radius")) blob.radius = number(file, b["radius"], where + ".radius");
-        if (b.contains("a")) blob.a = number(file, b["a"], where + ".a");
-        if (s.kernel == blobby::Kernel::blinn && !(blob.a > 0)) fail(file, where + ".a", "Blinn's falloff must be > 0");
-        if (s.kernel != blobby::Kernel::blinn && !(blob.radius > 0)) fail(file, where + ".radius", "must be > 0");
-        s.blobs.push_back(blob);
-    }
-    return s;
-}
-
 struct Opts {
     std::string scene, out;
     int res = 64;
     bool json = false;  // one JSON object with the figures instead of the text lines
 };
 
+int polygonize(const Opts& o, const blobby::BlobScene& s);
+
 int run(const Opts& o) {
-    const blobby::BlobScene s = parse_scene(o.scene);
+    const blobby::BlobScene s = read_blob_scene(o.scene);
+    try {
+        return polygonize(o, s);
+    } catch (const IoError&) {
+        throw;
+    } catch (const std::exception& e) {  // e.g. sample_lattice or the blob grid refusing the scene: name the file
+        throw std::runtime_error(o.scene + ": " + e.what());
+    }
+}
+
+int polygonize(const Opts& o, const blobby::BlobScene& s) {
     const Box box = blobby::make_field(s)->bounds();
     const glm::dvec3 size = box.size();
     const double longest = std::max({size.x, size.y, size.z});
-    if (!(longest > 0)) throw std::runtime_error(o.scene + ": no blob reaches the threshold (no surface)");
+    if (!(longest > 0)) throw std::runtime_error("no blob reaches the threshold (no surface)");
+    if (!std::isfinite(longest))  // the lattice's size below would convert NaN to int
+        throw std::runtime_error("the scene's extent is not finite (coordinates near 1e308?)");
     const double h = longest / o.res;
     // Two cells of margin on every side, so the lattice's boundary samples are outside and the mesh is closed.
     const glm::dvec3 origin = box.lo - 2 * h;

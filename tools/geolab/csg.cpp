@@ -54,7 +54,10 @@ int run_csg(const CsgOpts& o) {
         cam.target = c;
         cam.fov_deg = 30;
         cam.eye = c + 4.2 * r * glm::dvec3(std::cos(p) * std::cos(y), std::cos(p) * std::sin(y), std::sin(p));
-        // Row by row (the same shading as render_image) so that long runs show their progress.
+        // Row by row (the same shading as render_image) so that long runs show their progress; the tree is
+        // prepared once and one SpanLists serves every ray.
+        const csg::PreparedTree prepared = csg::prepare(tree);
+        csg::SpanLists lists;
         const glm::dvec3 l = glm::normalize(glm::dvec3(0.4, 0.6, 1.0));
         render::Image img;
         img.width = o.width;
@@ -63,7 +66,7 @@ int run_csg(const CsgOpts& o) {
         int shown = -1;
         for (int row = 0; row < o.height; ++row) {
             for (int x = 0; x < o.width; ++x) {
-                const auto h = csg::first_hit(tree, cam.ray(x, row, o.width, o.height), 0.0);
+                const auto h = csg::first_hit(prepared, cam.ray(x, row, o.width, o.height), 0.0, lists);
                 if (!h) continue;
                 const auto g = static_cast<std::uint8_t>(std::lround(255 * (0.1 + 0.8 * std::abs(glm::dot(h->normal, l)))));
                 std::uint8_t* px = &img.rgba[4 * (std::size_t(row) * o.width + x)];

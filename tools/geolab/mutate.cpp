@@ -24,7 +24,7 @@ struct MutateArgs {
     std::size_t max = 0;
     unsigned long long seed = 1;
     int jobs = 0;
-    bool resume = false, full = false, json = false, quiet = false;
+    bool resume = false, rerun_survivors = false, full = false, json = false, quiet = false;
     double timeout_factor = 10;
 };
 
@@ -96,6 +96,8 @@ int run(const MutateArgs& a) {
     opt.log = a.log;
     opt.resume = a.resume;
     if (a.resume && a.log.empty()) throw std::runtime_error("--resume needs --log FILE (the log of the run to resume)");
+    if (a.rerun_survivors && !a.resume) throw std::runtime_error("--rerun-survivors goes with --resume --log FILE");
+    opt.rerun_survivors = a.rerun_survivors;
     opt.full = a.full;
     opt.order = a.order;
     opt.timeout_factor = a.timeout_factor;
@@ -123,9 +125,12 @@ void add_mutate(CLI::App& app, int& status) {
     cmd->add_option("--max", a->max, "Run a random sample of this many mutants (default: all)");
     cmd->add_option("--seed", a->seed, "Seed of the --max sample")->capture_default_str();
     cmd->add_option("--jobs,-j", a->jobs, "Mutants graded at once (default: the number of cores)");
-    cmd->add_option("--only", a->only, "Only the mutants of this solution file (e.g. qef.cpp)");
+    cmd->add_option("--only", a->only, "Only the mutants of this solution file (e.g. qef.cpp), or of one line of it "
+                                       "(qef.cpp:58) or lines (qef.cpp:50-60); several, separated by commas (qef.cpp:58,origin.cpp)");
     cmd->add_option("--log", a->log, "Write one JSON line per mutant here");
     cmd->add_flag("--resume", a->resume, "Skip the mutants already in --log (after an interrupted run)");
+    cmd->add_flag("--rerun-survivors", a->rerun_survivors,
+                  "With --resume: grade the survivors in --log again (after adding tests); the rest stays as logged");
     cmd->add_flag("--full", a->full, "Run every test of each mutant (default: stop at its first failing test)");
     cmd->add_flag("--json", a->json, "Print the summary as one JSON object");
     cmd->add_option("--order", a->order, "Test order: killer (the test that killed the file's last mutant, then the "

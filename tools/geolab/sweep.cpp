@@ -7,6 +7,8 @@
 // one point "x y" of the current loop. The outer loop counter-clockwise, holes clockwise (validate_profile checks).
 // Path file (text): '#' comments; a line `closed` makes the path closed; every other non-empty line a point "x y z".
 // Tangents by central differences (polyline_path).
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <iostream>
@@ -44,7 +46,8 @@ std::vector<std::string> read_lines(const std::string& file) {
     const std::string text = read_text_file(file);
     std::vector<std::string> lines;
     std::string cur;
-    for (std::size_t i = 0; i < text.size(); ++i) {
+    // a UTF-8 byte order mark is skipped, as in every reader of lib
+    for (std::size_t i = text.starts_with("\xEF\xBB\xBF") ? 3 : 0; i < text.size(); ++i) {
         const char c = text[i];
         if (c == '\n' || c == '\r') {
             lines.push_back(cur);
@@ -62,6 +65,18 @@ std::string strip(std::string s) {
     const auto a = s.find_first_not_of(" \t"), b = s.find_last_not_of(" \t");
     return a == std::string::npos ? std::string() : s.substr(a, b - a + 1);
 }
+// Keywords (outer, hole, closed) in any case, as in every reader of lib.
+bool is_keyword(const std::string& s, const char* word) {
+    const std::string w = word;
+    return s.size() == w.size() &&
+           std::equal(s.begin(), s.end(), w.begin(), [](char a, char b) { return std::tolower(static_cast<unsigned char>(a)) == b; });
+}
+// A token for a message: quoted, at most 40 bytes, unprintable bytes shown as '?'.
+std::string token_quote(const std::string& t) {
+    std::string q = "'";
+    for (char c : t.substr(0, 40)) q += (c >= 32 && c < 127) ? c : '?';
+    return q + (t.size() > 40 ? "...'" : "'");
+}
 [[noreturn]] void parse_error(const std::string& file, std::size_t line, const std::string& why) {
     throw IoError(file, line, why);
 }
@@ -78,8 +93,8 @@ std::vector<double> numbers(const std::string& s, int n, const std::string& file
         } catch (const std::exception&) {
             used = 0;
         }
-        if (used != tok.size()) parse_error(file, line, "'" + tok + "' is not a number");
-        if (!std::isfinite(x)) parse_error(file, line, "'" + tok + "' is not finite");
+        if (used != tok.size()) parse_error(file, line, token_quote(tok) + " is not a number");
+        if (!std::isfinite(x)) parse_error(file, line, token_quote(tok) + " is not finite");
         v.push_back(x);
     }
     if (static_cast<int>(v.size()) != n)
@@ -95,11 +110,11 @@ sweeps::Profile read_profile(const std::string& file) {
     for (std::size_t i = 0; i < lines.size(); ++i) {
         const std::string s = strip(lines[i]);
         if (s.empty()) continue;
-        if (s == "outer") {
+        if (is_keyword(s, "outer")) {
             if (have_outer) parse_error(file, i + 1, "a second 'outer' loop (one outer loop, then holes)");
             have_outer = true;
             cur = &p.outer;
-        } else if (s == "hole") {
+        } else if (is_keyword(s, "hole")) {
             if (!have_outer) parse_error(file, i + 1, "'hole' before the 'outer' loop");
             p.holes.emplace_back();
             cur = &p.holes.back();
@@ -125,7 +140,7 @@ sweeps::Path read_path(const std::string& file) {
     for (std::size_t i = 0; i < lines.size(); ++i) {
         const std::string s = strip(lines[i]);
         if (s.empty()) continue;
-        if (s == "closed") {
+        if (is_keyword(s, "closed")) {
             closed = true;
             continue;
         }
@@ -195,23 +210,38 @@ int run_sweep(const SweepOpts& o) {
         }
         mesh = sweeps::sweep(prof, path, frames);
     }
+    // The global check: lib's check_surface counts every pair of faces that meet (exact predicates), so a sweep
+    // whose path comes back within the profile's reach of itself (a coil wound too tight) is found too, although
+    // no turn of the path is too tight for check_sweep.
     const SurfaceCheck c = check_surface(mesh);
     const double volume = sweeps::mesh_volume(mesh), area = sweeps::mesh_area(mesh);
+    const std::size_t crossing = c.self_intersecting_pairs();
     out << "mesh            " << c.summary() << "\n"
         << "volume          " << volume << "\n"
         << "area            " << area << "\n"
+        << "self-intersect  " << (crossing ? std::to_string(crossing) + " pairs of faces meet" : std::string("no")) << "\n"
         << "closed manifold " << (c.closed_manifold() ? "yes (printable)" : "NO") << "\n";
-    write_mesh(o.out, mesh);
-    out << "wrote " << o.out << "\n";
+    const bool write = crossing == 0 || o.force;
+    if (crossing && !o.force)
+        std::cerr << "geolab sweep: the swept surface intersects itself (" << crossing << " pairs of faces meet"
+                  << (report["mode"] == "path" && !report["self_intersects"].get<bool>()
+                          ? "; no turn of the path is too tight, so the path comes back within the profile's reach of itself"
+                          : "")
+                  << "); not written (--force writes it anyway)\n";
+    if (write) {
+        write_mesh(o.out, mesh);
+        out << "wrote " << o.out << "\n";
+    }
     if (o.json) {
         report["vertices"] = c.vertices;
         report["faces"] = c.faces;
         report["euler_characteristic"] = c.euler_characteristic;
         report["components"] = c.components;
+        report["self_intersecting_pairs"] = crossing;
         report["closed_manifold"] = c.closed_manifold();
         report["volume"] = volume;
         report["area"] = area;
-        report["out"] = o.out;
+        report["out"] = write ? nlohmann::json(o.out) : nlohmann::json(nullptr);
         std::cout << report.dump() << "\n";
     }
     return c.closed_manifold() ? 0 : 1;
@@ -239,7 +269,8 @@ void add_sweep(CLI::App& app, int& status) {
     s->add_option("--helix", o->helix, "Sweep along a helix: r h turns samples")->expected(4);
     s->add_option("--trefoil", o->trefoil, "Sweep along the trefoil knot: samples scale")->expected(2);
     s->add_option("--frames", o->frames, "Frames along a path: rmf or frenet")->check(CLI::IsMember({"rmf", "frenet"}))->capture_default_str();
-    s->add_flag("--force", o->force, "Write a sweep even when check_sweep reports a self-intersection");
+    s->add_flag("--force", o->force, "Write a sweep even when it intersects itself (check_sweep's local test or "
+                                     "check_surface's face pairs)");
     s->add_flag("--json", o->json, "Print one JSON object with the figures (stable names) instead of the text lines");
     s->callback([o, &status] {
         try {

@@ -1,5 +1,6 @@
 // Task 1: build a half-edge mesh from a polygon soup (handout §3).
 #include <algorithm>
+#include <numeric>
 #include <span>
 #include <string>
 #include <vector>

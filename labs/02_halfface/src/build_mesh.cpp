@@ -1,7 +1,7 @@
 // Task 1: build the half-face mesh from a cell list (handout §3).
 #include <algorithm>
 #include <cmath>
-#include <numeric>
+#include <span>
 #include <sstream>
 #include <stdexcept>
 #include <string>

@@ -1,7 +1,8 @@
 // Task 5: tensor-product patches — points, partial derivatives, normals, tessellation (handout §6).
 #include <cmath>
 #include <cstdint>
-#include <cstring>
+#include <limits>
+#include <map>
 #include <stdexcept>
 #include <unordered_map>
 

@@ -6,6 +6,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "geolab/memory.hpp"
 #include "geolab/sweeps.hpp"
 
 namespace geolab::sweeps {

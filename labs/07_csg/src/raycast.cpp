@@ -8,6 +8,10 @@
 
 namespace geolab::csg {
 
+std::optional<Hit> first_hit(const PreparedTree& t, const Ray& ray, double t_min, SpanLists& lists) {
+    throw geolab::NotImplemented(__func__);
+}
+
 std::optional<Hit> first_hit(const Tree& t, const Ray& ray, double t_min) {
     throw geolab::NotImplemented(__func__);
 }

@@ -13,6 +13,10 @@ double smooth_min(double a, double b, double k) {
 
 // Helper functions of your own can go here.
 
+double sdf(const PreparedTree& t, const glm::dvec3& x) {
+    throw geolab::NotImplemented(__func__);
+}
+
 double sdf(const Tree& t, const glm::dvec3& x) {
     throw geolab::NotImplemented(__func__);
 }

@@ -13,7 +13,7 @@ namespace geolab::csg {
 
 // Helper functions of your own can go here.
 
-std::vector<Span> primitive_spans(const Node& leaf, const Ray& r) {
+void primitive_spans(const Node& leaf, const Ray& r, std::vector<Span>& out) {
     throw geolab::NotImplemented(__func__);
 }
 

@@ -4,6 +4,7 @@
 //! through FreeType, both as control points. Reading only: no evaluation here (that is the lab's work).
 #include <array>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -25,9 +26,13 @@ struct BezierPatch {
 //! Reads a .bpt file: the patch count, then per patch a line "du dv" and (du + 1)(dv + 1) lines "x y z", the
 //! inner index running fastest (the file's k-th point of a patch is P_ij with i = k / (dv + 1), j = k % (dv + 1)).
 //! For data/teapot.bpt (Newell's 32 patches) S_u × S_v points INTO the teapot's body.
-//! \throw IoError "FILE:LINE: reason" on a missing file, a bad count or degree (1..30), a point line without
-//!        exactly three finite numbers, a missing point or trailing data.
+//! Text as in every reader of lib: a UTF-8 byte order mark is skipped; a line ends with LF, CRLF or a lone CR.
+//! The file is read with read_text_file (io.hpp: regular files only, GEOLAB_MAX_FILE_MB).
+//! \throw IoError "FILE:LINE: reason" on a missing file, a bad count (1..100000) or degree (1..30), a point line
+//!        without exactly three finite numbers, a missing point or trailing data.
 std::vector<BezierPatch> read_bpt(const std::string& path);
+//! The same from text in memory; `path` names it in errors.
+std::vector<BezierPatch> read_bpt_from_string(std::string_view text, const std::string& path = "<memory>");
 
 //! The project's copy of Newell's teapot (data/teapot.bpt in the course tree).
 std::string teapot_path();
@@ -48,9 +53,13 @@ struct GlyphOutline {
 };
 
 //! The outline of the glyph of `codepoint` in the TrueType font file `font_path`, unscaled (font units).
-//! \throw IoError naming the file when FreeType cannot open it, the font has no glyph for the code point, or
-//!        the outline has cubic segments (not a TrueType quadratic outline).
+//! The file is read with read_text_file (io.hpp: regular files only, GEOLAB_MAX_FILE_MB), then parsed by FreeType.
+//! \throw IoError naming the file when it cannot be read, FreeType cannot open it, the font has no glyph for the
+//!        code point, or the outline has cubic segments (not a TrueType quadratic outline).
 GlyphOutline read_glyph(const std::string& font_path, char32_t codepoint);
+//! The same from the font file's bytes in memory; `font_path` names it in errors.
+GlyphOutline read_glyph_from_memory(const std::string& font, char32_t codepoint,
+                                    const std::string& font_path = "<memory>");
 
 //! DejaVu Sans from Debian's fonts-dejavu-core (/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf).
 std::string default_font_path();

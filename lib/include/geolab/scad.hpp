@@ -19,7 +19,10 @@
 //! Anything else (modules, functions, for, if, let, echo, import, 2-D shapes, extrusions, `!#%*` modifiers, an
 //! unknown argument, ...) is a ParseError naming the file, line, column and the construct. Hostile input is
 //! rejected cleanly: nesting deeper than 256, more than 1,000,000 solids, numbers that are not finite, vectors
-//! longer than 1024 entries. Parsing is linear in the file's length.
+//! longer than 1024 entries, arithmetic that computes more than 1,000,000 vector entries in all (a variable is
+//! shared, not copied, where it is used). Parsing is linear in the file's length. Text as in every reader of lib: a
+//! UTF-8 byte order mark is skipped, a line ends with LF, CRLF or a lone CR (a `//` comment too); keywords are
+//! case-sensitive, as in OpenSCAD.
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -62,7 +65,8 @@ struct Scene {
 //! and when the scene has no solid.
 Scene parse(std::string_view text, const std::string& name = "<text>");
 
-//! Reads and parses a file. \throw geolab::IoError when it cannot be read, ParseError as parse().
+//! Reads (lib's read_text_file: regular files only, GEOLAB_MAX_FILE_MB) and parses a file.
+//! \throw geolab::IoError when it cannot be read, ParseError as parse().
 Scene read(const std::string& path);
 
 }  // namespace geolab::scad

@@ -55,14 +55,18 @@ void check_volume_mesh(const VolumeMesh& mesh);
 //! Medit ASCII `.mesh`: MeshVersionFormatted, Dimension 3, Vertices, Tetrahedra, Hexahedra, Prisms, Pyramids,
 //! Triangles, and the sections that are read and ignored (Edges, Quadrilaterals, Corners, Ridges,
 //! RequiredVertices, RequiredEdges, Normals, NormalAtVertices, Tangents, TangentAtEdges); `#` starts a comment;
-//! indices are 1-based; End ends the file. Any other keyword is an error.
+//! indices are 1-based; keywords in any case. Any other keyword is an error, and so is a keyword given twice (a
+//! second Tetrahedra section), a file without End (a file cut after a whole section would otherwise read as a
+//! smaller mesh), anything but comments after End, a triangle that repeats a vertex and a reference (label) outside
+//! 32 bits. A UTF-8 byte order mark is skipped; a line ends with LF, CRLF or a lone CR.
 VolumeMesh read_medit(const std::filesystem::path& path, const ReadOptions& options = {});
 VolumeMesh read_medit_from_string(const std::string& data, const std::string& name = "<memory>");
 
 //! TetGen: `base.node` and `base.ele` (4-corner tetrahedra; a region attribute, when present, becomes the cell
 //! label) and, if the file exists, `base.face` (triangles with an optional boundary marker). `path` may name
 //! any of the three files or the base. Node numbering starts at the first node's index (0 or 1) and must be
-//! consecutive. .ele with 10 nodes per tetrahedron (quadratic) uses the first 4.
+//! consecutive. .ele with 10 nodes per tetrahedron (quadratic) uses the first 4. A face that repeats a node and a
+//! boundary marker outside 32 bits are errors.
 VolumeMesh read_tetgen(const std::filesystem::path& path, const ReadOptions& options = {});
 //! The same from text in memory (face may be empty: no triangles); names are used in messages only.
 VolumeMesh read_tetgen_from_strings(const std::string& node, const std::string& ele, const std::string& face,

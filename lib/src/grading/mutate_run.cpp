@@ -9,8 +9,10 @@
 #include <cstdio>
 #include <deque>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <random>
 #include <regex>
 #include <sstream>
@@ -22,6 +24,7 @@
 #include <nlohmann/json.hpp>
 
 #include "geolab/grading/mutate.hpp"
+#include "geolab/grading/report.hpp"
 #include "geolab/grading/runner.hpp"
 #include "text_file.hpp"
 
@@ -48,6 +51,11 @@ std::size_t MutateReport::count(Outcome o) const {
         std::count_if(results.begin(), results.end(), [&](const MutantResult& r) { return r.outcome == o; }));
 }
 
+std::size_t MutateReport::proven_equivalents() const {
+    return static_cast<std::size_t>(
+        std::count_if(results.begin(), results.end(), [](const MutantResult& r) { return r.outcome == Outcome::equivalent && r.proven; }));
+}
+
 double MutateReport::rate() const {
     const double killed = static_cast<double>(count(Outcome::killed) + count(Outcome::timed_out));
     const double denom = killed + static_cast<double>(count(Outcome::survived));
@@ -63,6 +71,14 @@ std::string trim(const std::string& s) {
     const auto a = s.find_first_not_of(" \t\r\n");
     if (a == std::string::npos) return "";
     return s.substr(a, s.find_last_not_of(" \t\r\n") - a + 1);
+}
+
+// At most n bytes of s, cut before a UTF-8 continuation byte so that no character is split (a split one makes
+// the JSON log line invalid: nlohmann::json refuses to dump it).
+std::string utf8_prefix(const std::string& s, std::size_t n) {
+    if (s.size() <= n) return s;
+    while (n > 0 && (static_cast<unsigned char>(s[n]) & 0xC0) == 0x80) --n;
+    return s.substr(0, n);
 }
 
 // A trusted command (compiler, linker, git, ninja) with plain limits.
@@ -190,13 +206,14 @@ BuildRecipe read_recipe(const fs::path& build, const fs::path& src_dir, const st
     return r;
 }
 
-// The first error line of a compiler's output (for the report).
+// The first error line of a compiler's output (for the report; cut to 300 bytes, then made valid UTF-8 again:
+// compilers quote with ‘ ’).
 std::string first_error(const std::string& out) {
     std::istringstream in(out);
     std::string line;
     while (std::getline(in, line))
-        if (line.find("error") != std::string::npos) return trim(line).substr(0, 300);
-    return trim(out).substr(0, 300);
+        if (line.find("error") != std::string::npos) return valid_utf8(utf8_prefix(trim(line), 300));
+    return valid_utf8(utf8_prefix(trim(out), 300));
 }
 
 // Every file of a folder with its content: what "restored" is checked against.
@@ -228,8 +245,48 @@ nlohmann::json result_json(const MutantResult& r) {
             {"line", r.mutant.line},       {"col", r.mutant.col},         {"kind", r.mutant.kind},
             {"original", r.mutant.original}, {"mutated", r.mutant.mutated}, {"outcome", to_string(r.outcome)},
             {"mode", r.mode},              {"detail", r.detail},          {"tests_run", r.tests_run},
-            {"anchor", r.anchor},
+            {"anchor", r.anchor},          {"proven", r.proven},
             {"seconds", std::round(r.seconds * 1000) / 1000}};
+}
+
+// The schema cache (schema/STEM.excluded): which of a file's mutants its schema had to leave out, and whether the
+// schema was relaxed, for the schema text (all mutants in) and the compile command of `key`.
+struct SchemaCache {
+    bool relax = false;
+    std::set<int> excluded;
+};
+std::string schema_cache_key(const std::string& schema_text, const std::vector<std::string>& command) {
+    std::uint64_t h = 14695981039346656037ull;  // FNV-1a, 64 bits
+    auto add = [&](const std::string& s) {
+        for (unsigned char c : s) {
+            h ^= c;
+            h *= 1099511628211ull;
+        }
+        h ^= 0xff;
+        h *= 1099511628211ull;
+    };
+    add("geolab-mutate-schema-1");
+    add(schema_text);
+    for (const auto& a : command) add(a);
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+    return buf;
+}
+std::optional<SchemaCache> read_schema_cache(const fs::path& file, const std::string& key) {
+    if (!fs::exists(file)) return std::nullopt;
+    std::istringstream in(read_text(file));
+    std::string k;
+    int relax = 0;
+    if (!(in >> k >> relax) || k != key) return std::nullopt;
+    SchemaCache c;
+    c.relax = relax != 0;
+    for (int id; in >> id;) c.excluded.insert(id);
+    return c;
+}
+void write_schema_cache(const fs::path& file, const std::string& key, const SchemaCache& c) {
+    std::string text = key + " " + (c.relax ? "1" : "0") + "\n";
+    for (int id : c.excluded) text += std::to_string(id) + "\n";
+    write_text(file, text);
 }
 
 Outcome outcome_from(const std::string& s) {
@@ -378,15 +435,49 @@ MutateReport run_mutate(const MutateOptions& opt) {
         rep.total_mutants += files.back().mutants().size();
     }
     std::vector<Mutant> chosen;
-    bool only_matched = opt.only.empty();
-    for (const auto& f : files) {
-        if (!opt.only.empty() && f.file() != opt.only && f.file() != "src/" + opt.only &&
-            fs::path(f.file()).filename() != opt.only && "solutions/" + opt.lab + "/" + f.file() != opt.only)
-            continue;
-        only_matched = true;
-        for (const auto& m : f.mutants()) chosen.push_back(m);
+    {
+        // --only FILE[:LINE[-LAST]][,...]
+        struct Only {
+            std::string file;
+            int line = 0, last = 0;  // line 0: every line
+        };
+        std::vector<Only> only;
+        const std::regex lines(R"((.+):(\d+)(?:-(\d+))?)");
+        for (std::size_t p = 0; !opt.only.empty() && p <= opt.only.size();) {
+            const std::size_t q = std::min(opt.only.find(',', p), opt.only.size());
+            const std::string item = trim(opt.only.substr(p, q - p));
+            std::smatch mt;
+            if (std::regex_match(item, mt, lines))
+                only.push_back({mt[1], std::stoi(mt[2]), mt[3].matched ? std::stoi(mt[3]) : std::stoi(mt[2])});
+            else if (!item.empty())
+                only.push_back({item, 0, 0});
+            p = q + 1;
+        }
+        std::set<int> taken;
+        for (const auto& [file, line, last] : only) {
+            bool matched = false;
+            for (const auto& f : files) {
+                if (f.file() != file && f.file() != "src/" + file && fs::path(f.file()).filename() != file &&
+                    "solutions/" + opt.lab + "/" + f.file() != file)
+                    continue;
+                matched = true;
+                bool any = false;
+                for (const auto& m : f.mutants())
+                    if (line == 0 || (m.line >= line && m.line <= last)) {
+                        any = true;
+                        if (taken.insert(m.id).second) chosen.push_back(m);
+                    }
+                if (!any)
+                    throw std::runtime_error("--only " + file + ":" + std::to_string(line) +
+                                             (last != line ? "-" + std::to_string(last) : "") + ": no mutant there");
+            }
+            if (!matched) throw std::runtime_error("--only " + file + ": no such file in " + src_dir.string());
+        }
+        if (only.empty())
+            for (const auto& f : files)
+                for (const auto& m : f.mutants()) chosen.push_back(m);
+        std::sort(chosen.begin(), chosen.end(), [](const Mutant& a, const Mutant& b) { return a.id < b.id; });
     }
-    if (!only_matched) throw std::runtime_error("--only " + opt.only + ": no such file in " + src_dir.string());
     {
         std::set<std::pair<std::string, int>> sites;
         for (const auto& m : chosen) sites.insert({m.file, static_cast<int>(m.offset)});
@@ -434,7 +525,9 @@ MutateReport run_mutate(const MutateOptions& opt) {
     std::vector<Mutant> todo;
     for (const auto& m : chosen) {
         auto it = logged.find(m.key());
-        if (it == logged.end()) {
+        // --rerun-survivors: a survivor of the logged run is graded again (tests were added since); its new line
+        // in the log replaces the old one on the next --resume
+        if (it == logged.end() || (opt.rerun_survivors && it->second.value("outcome", "") == "survived")) {
             todo.push_back(m);
             continue;
         }
@@ -446,8 +539,10 @@ MutateReport run_mutate(const MutateOptions& opt) {
         r.detail = it->second.value("detail", "");
         r.tests_run = it->second.value("tests_run", 0);
         r.seconds = it->second.value("seconds", 0.0);
-        // The equivalent list may have been reviewed since the log was written: today's list decides.
-        if (r.outcome == Outcome::equivalent && !equivalent.count(m.key())) r.outcome = Outcome::survived;
+        r.proven = r.outcome == Outcome::equivalent && it->second.value("proven", false);
+        // The equivalent list may have been reviewed since the log was written: today's list decides (a proven
+        // equivalent stays one).
+        if (r.outcome == Outcome::equivalent && !r.proven && !equivalent.count(m.key())) r.outcome = Outcome::survived;
         if (r.outcome == Outcome::survived && equivalent.count(m.key())) {
             r.outcome = Outcome::equivalent;
             r.detail = equivalent[m.key()];
@@ -507,19 +602,36 @@ MutateReport run_mutate(const MutateOptions& opt) {
                 bool relax = !relaxed.empty();
                 const std::string stem = fs::path(file.file()).stem().string();
                 const fs::path src = scratch / "schema" / (stem + ".cpp"), obj = scratch / "schema" / (stem + ".o");
+                const std::set<int> all_ids = ids;
+                auto unrelax = [&] {  // constexpr is needed after all: the relaxed mutants are rebuilt alone
+                    relax = false;
+                    std::lock_guard lock(rebuild_mutex);
+                    for (int id : relaxed)
+                        if (ids.erase(id)) rebuild_ids.insert(id);
+                };
+                // The compiles that failed last time are not repeated (ccache keeps successes only): the cache
+                // names the sites left out of the schema of the same text with the same command.
+                const fs::path cache_file = scratch / "schema" / (stem + ".excluded");
+                const std::string cache_key = schema_cache_key(file.schema(ids, nullptr, relax), recipe.compile_cmd(names[f], src, obj));
+                if (const auto cached = read_schema_cache(cache_file, cache_key)) {
+                    if (!cached->relax && relax) unrelax();
+                    std::lock_guard lock(rebuild_mutex);
+                    for (int id : cached->excluded)
+                        if (ids.erase(id)) rebuild_ids.insert(id);
+                }
                 for (int attempt = 0;; ++attempt) {
-                    if (relax && attempt == 30) {
-                        // constexpr variables are needed as constants after all: their mutants are rebuilt alone
-                        relax = false;
-                        std::lock_guard lock(rebuild_mutex);
-                        for (int id : relaxed)
-                            if (ids.erase(id)) rebuild_ids.insert(id);
-                    }
+                    if (relax && attempt == 30) unrelax();
                     std::vector<SourceFile::Span> spans;
                     write_text(src, file.schema(ids, &spans, relax));
                     CommandResult c = run_plain(recipe.compile_cmd(names[f], src, obj), 1800);
                     if (c.exit_code == 0) c = recipe.rename_boundary(obj);
-                    if (c.exit_code == 0) break;
+                    if (c.exit_code == 0) {
+                        std::set<int> excluded;
+                        std::set_difference(all_ids.begin(), all_ids.end(), ids.begin(), ids.end(),
+                                            std::inserter(excluded, excluded.end()));
+                        write_schema_cache(cache_file, cache_key, {relax, excluded});
+                        break;
+                    }
                     // kept for the curious: which sites a schema could not hold, and why
                     write_text(scratch / "schema" / (stem + ".attempt" + std::to_string(attempt) + ".log"), c.output);
                     write_text(scratch / "schema" / (stem + ".attempt" + std::to_string(attempt) + ".cpp"), read_text(src));
@@ -558,6 +670,10 @@ MutateReport run_mutate(const MutateOptions& opt) {
                             for (int id : exact.empty() ? on_line : exact) bad.insert(id);
                         }
                     }
+                    if (bad.empty() && relax) {  // nothing attributable: first try without relaxing constexpr
+                        unrelax();
+                        continue;
+                    }
                     if (bad.empty()) bad = ids;  // nothing attributable: this file's mutants are rebuilt alone
                     for (int id : bad) ids.erase(id);
                     std::lock_guard lock(rebuild_mutex);
@@ -592,8 +708,10 @@ MutateReport run_mutate(const MutateOptions& opt) {
     {
         const fs::path report = scratch / "schema-report.txt";
         fs::remove(report);
+        fs::remove(scratch / "tables.txt");
         RunOptions probe = run;
         probe.env.push_back("GEOLAB_MUTANT_REPORT=" + report.string());
+        probe.env.push_back("GEOLAB_MUTANT_TABLES=" + (scratch / "tables.txt").string());
         (void)list_tests(program, probe);
         if (fs::exists(report)) {
             std::istringstream in(read_text(report));
@@ -612,6 +730,7 @@ MutateReport run_mutate(const MutateOptions& opt) {
     const std::vector<TestInfo> tests = list_tests(program, run);
     std::vector<Baseline> base(tests.size());
     std::vector<std::set<int>> covers(tests.size());  // per test: the mutants whose site it reaches
+    std::vector<std::set<int>> covers_later(tests.size());  // ... past its file's start-up (see started())
     fs::remove_all(scratch / "coverage");
     fs::create_directories(scratch / "coverage");
     {
@@ -621,11 +740,19 @@ MutateReport run_mutate(const MutateOptions& opt) {
                 RunOptions o = run;
                 const fs::path cov = scratch / "coverage" / (std::to_string(i) + ".txt");
                 o.env.push_back("GEOLAB_MUTANT_COVERAGE=" + cov.string());
-                const TestResult r = run_test(program, tests[i], o);
+                TestResult r = run_test(program, tests[i], o);
+                if (r.status != Status::passed) {  // once more: a busy machine can time a test out once
+                    fs::remove(cov);
+                    r = run_test(program, tests[i], o);
+                }
                 base[i] = {tests[i], r.status == Status::passed, r.status, r.seconds};
-                if (fs::exists(cov)) {
+                if (fs::exists(cov)) {  // k: reached past its file's start-up; -1 - k: during it
                     std::istringstream in(read_text(cov));
-                    for (int id; in >> id;) covers[i].insert(id);
+                    for (long v; in >> v;) {
+                        const int id = static_cast<int>(v < 0 ? -1 - v : v);
+                        covers[i].insert(id);
+                        if (v >= 0) covers_later[i].insert(id);
+                    }
                 }
             }
         };
@@ -641,12 +768,34 @@ MutateReport run_mutate(const MutateOptions& opt) {
     rep.baseline_seconds = since(t_base);
     {
         std::size_t failing = 0;
-        for (const auto& b : base) failing += !b.passed;
+        std::string names;
+        for (const auto& b : base)
+            if (!b.passed) {
+                ++failing;
+                names += std::string(names.empty() ? "" : ", ") + "'" + b.info.name + "' (" + to_string(b.status) + ")";
+            }
         say("baseline: " + std::to_string(tests.size()) + " tests in " + fmt_duration(rep.baseline_seconds) +
-            (failing ? "; WARNING: " + std::to_string(failing) + " fail on the unmutated reference" : ", all pass") +
+            (failing ? "; WARNING: " + std::to_string(failing) + " fail on the unmutated reference, twice: " + names
+                     : ", all pass") +
             "; build " + fmt_duration(rep.build_seconds) + " (" +
             std::to_string(std::count_if(todo.begin(), todo.end(), [&](const Mutant& m) { return rebuild_ids.count(m.id) > 0; })) +
             " mutants need a rebuild each)");
+    }
+    // Mutants of constexpr tables: in a relaxed schema the tables are computed at start-up. A mutant whose site
+    // the reference reaches only then (in no test past start-up) changes nothing but the tables: when every
+    // table comes out byte for byte the same with it selected, it is equivalent, proven (grade() checks).
+    const std::string base_tables = fs::exists(scratch / "tables.txt") ? read_text(scratch / "tables.txt") : "";
+    std::set<int> table_only;
+    {
+        std::set<int> reached, later;
+        for (std::size_t i = 0; i < tests.size(); ++i) {
+            reached.insert(covers[i].begin(), covers[i].end());
+            later.insert(covers_later[i].begin(), covers_later[i].end());
+        }
+        for (const auto& m : todo)
+            if (!base_tables.empty() && m.needs_relax && !rebuild_ids.count(m.id) && !stillborn_ids.count(m.id) &&
+                reached.count(m.id) && !later.count(m.id))
+                table_only.insert(m.id);
     }
     // Cheap tests first.
     std::vector<std::size_t> cheap(tests.size());
@@ -776,6 +925,25 @@ MutateReport run_mutate(const MutateOptions& opt) {
         } else {
             r.mode = "schema";
             o.env.push_back("GEOLAB_MUTANT=" + std::to_string(m.id));
+            if (table_only.count(m.id)) {
+                // only the start-up tables can differ: compare them (one start of the program, no test)
+                const fs::path dir = scratch / ("job" + std::to_string(job));
+                fs::create_directories(dir);
+                const fs::path tables = dir / "tables.txt";
+                fs::remove(tables);
+                RunOptions probe = o;
+                probe.env.push_back("GEOLAB_MUTANT_TABLES=" + tables.string());
+                const CommandResult c = run_command({prog.string(), "--geolab-list"}, 60, probe);
+                if (c.exit_code == 0 && !c.timed_out && fs::exists(tables) && read_text(tables) == base_tables) {
+                    r.outcome = Outcome::equivalent;
+                    r.mode = "tables";
+                    r.proven = true;
+                    r.detail = "proven: its code runs only while the program starts, to compute constexpr tables, "
+                               "and every table comes out byte for byte the same";
+                    r.seconds = since(t0);
+                    return r;
+                }
+            }
         }
         // The order: the test that killed this file's previous mutant first, then by kills so far per second
         // of run time (the likeliest killer per cost first), the cheap ones among equals.
@@ -806,7 +974,7 @@ MutateReport run_mutate(const MutateOptions& opt) {
                 // the first test of a fresh process: exactly as grading runs it, nothing to confirm
                 r.outcome = Outcome::killed;
                 r.detail = "'" + tests[order[0]].name + "' failed";
-                if (!v.back().message.empty()) r.detail += ": " + v.back().message.substr(0, 200);
+                if (!v.back().message.empty()) r.detail += ": " + valid_utf8(utf8_prefix(v.back().message, 200));
                 std::lock_guard lock(out_mutex);
                 last_killer[m.file] = order[0];
                 ++kills[order[0]];
@@ -838,7 +1006,7 @@ MutateReport run_mutate(const MutateOptions& opt) {
             if (first) {
                 r.outcome = tr.status == Status::timeout ? Outcome::timed_out : Outcome::killed;
                 r.detail = "'" + t.name + "' " + to_string(tr.status);
-                if (!tr.messages.empty()) r.detail += ": " + tr.messages.front().substr(0, 200);
+                if (!tr.messages.empty()) r.detail += ": " + valid_utf8(utf8_prefix(tr.messages.front(), 200));
                 std::lock_guard lock(out_mutex);
                 last_killer[m.file] = i;
                 ++kills[i];
@@ -911,9 +1079,9 @@ std::string format_report(const MutateReport& rep) {
     os << " at " << rep.sites << " sites\n";
     char buf[256];
     std::snprintf(buf, sizeof buf,
-                  "  killed      %5zu  (%zu of them by the time limit)\n  survived    %5zu\n  equivalent  %5zu  (reviewed, "
-                  "listed in equivalent-mutants.txt)\n  stillborn   %5zu  (do not compile)\n",
-                  killed + timed, timed, survived, equiv, still);
+                  "  killed      %5zu  (%zu of them by the time limit)\n  survived    %5zu\n  equivalent  %5zu  (%zu reviewed, "
+                  "listed in equivalent-mutants.txt; %zu proven: the same constexpr tables)\n  stillborn   %5zu  (do not compile)\n",
+                  killed + timed, timed, survived, equiv, equiv - rep.proven_equivalents(), rep.proven_equivalents(), still);
     os << buf;
     std::snprintf(buf, sizeof buf, "  score       %.1f %% of non-equivalent mutants killed (%zu / %zu)\n", 100 * rep.rate(),
                   killed + timed, killed + timed + survived);
@@ -926,10 +1094,16 @@ std::string format_report(const MutateReport& rep) {
                 os << "  " << r.mutant.key() << (r.anchor.empty() ? "" : " | " + r.anchor)
                    << (r.detail.empty() ? "" : "   [" + r.detail + "]") << "\n";
     }
-    if (equiv) {
+    if (equiv > rep.proven_equivalents()) {
         os << "equivalent (reviewed):\n";
         for (const auto& r : rep.results)
-            if (r.outcome == Outcome::equivalent) os << "  " << r.mutant.key() << " | " << r.detail << "\n";
+            if (r.outcome == Outcome::equivalent && !r.proven) os << "  " << r.mutant.key() << " | " << r.detail << "\n";
+    }
+    if (rep.proven_equivalents()) {
+        os << "equivalent (proven: their code runs only at start-up, to compute constexpr tables, which come out byte "
+              "for byte the same):\n";
+        for (const auto& r : rep.results)
+            if (r.outcome == Outcome::equivalent && r.proven) os << "  " << r.mutant.key() << "\n";
     }
     for (const auto& k : rep.killed_equivalents)
         os << "warning: equivalent-mutants.txt lists '" << k << "', but the tests kill it: remove it from the list\n";
@@ -951,13 +1125,16 @@ std::string report_json(const MutateReport& rep) {
     j["timed_out"] = rep.count(Outcome::timed_out);
     j["survived"] = rep.count(Outcome::survived);
     j["equivalent"] = rep.count(Outcome::equivalent);
+    j["proven_equivalent"] = rep.proven_equivalents();
     j["stillborn"] = rep.count(Outcome::stillborn);
     j["rate"] = std::round(rep.rate() * 10000) / 10000;
     j["survivors"] = nlohmann::json::array();
     j["equivalents"] = nlohmann::json::array();
+    j["proven_equivalents"] = nlohmann::json::array();
     for (const auto& r : rep.results) {
         if (r.outcome == Outcome::survived) j["survivors"].push_back(r.mutant.key());
-        if (r.outcome == Outcome::equivalent) j["equivalents"].push_back(r.mutant.key());
+        if (r.outcome == Outcome::equivalent && !r.proven) j["equivalents"].push_back(r.mutant.key());
+        if (r.outcome == Outcome::equivalent && r.proven) j["proven_equivalents"].push_back(r.mutant.key());
     }
     j["stale_equivalents"] = rep.stale_equivalents;
     j["killed_equivalents"] = rep.killed_equivalents;

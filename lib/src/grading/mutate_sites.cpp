@@ -361,7 +361,7 @@ struct TokenInfo {
 }  // namespace
 
 SourceFile::SourceFile(std::string file, std::string text, const Vocabulary& vocab, int first_id)
-    : file_(std::move(file)), text_(std::move(text)) {
+    : file_(std::move(file)), text_(std::move(text)), first_id_(first_id) {
     const std::vector<Token> all = lex(text_, file_);
     // The solution blocks: byte ranges between "// BEGIN SOLUTION" and "// END SOLUTION" comments.
     std::vector<std::pair<std::size_t, std::size_t>> blocks;
@@ -444,6 +444,42 @@ SourceFile::SourceFile(std::string file, std::string text, const Vocabulary& voc
             if (info[i].template_open && info[i].match != std::string::npos)
                 for (std::size_t j = i + 1; j < info[i].match; ++j) info[j].in_template_args = true;
     }
+    // Whether token i is at namespace scope: no enclosing brace, or only those of namespaces and extern "C".
+    auto at_namespace_scope = [&](std::size_t i) {
+        int depth = 0;
+        for (std::size_t q = i; q-- > 0;) {
+            if (txt(q) == "}") ++depth;
+            else if (txt(q) == "{" && depth > 0) --depth;
+            else if (txt(q) == "{") {
+                std::size_t p = q;
+                while (p > 0 && ((kind(p - 1) == TokenKind::identifier && txt(p - 1) != "namespace") || txt(p - 1) == "::"))
+                    --p;                                                  // its name (a::b)
+                if (p > 0 && kind(p - 1) == TokenKind::string) --p;  // extern "C"
+                if (p == 0 || (txt(p - 1) != "namespace" && txt(p - 1) != "extern")) return false;
+            }
+        }
+        return true;
+    };
+    // The comma-separated pieces of tokens [first, end) at bracket depth 0: (first, last exclusive) each.
+    auto top_level_pieces = [&](std::size_t first, std::size_t end) {
+        std::vector<std::pair<std::size_t, std::size_t>> out;
+        std::size_t start = first;
+        for (std::size_t k = first; k < end; ++k) {
+            const std::string& u = txt(k);
+            if ((u == "(" || u == "[" || u == "{" || (u == "<" && info[k].template_open)) && info[k].match != std::string::npos &&
+                info[k].match < end) {
+                k = info[k].match;
+                continue;
+            }
+            if (u == ",") {
+                out.push_back({start, k});
+                start = k + 1;
+            }
+        }
+        out.push_back({start, end});
+        return out;
+    };
+
     // 2. Unevaluated and constant contexts.
     for (std::size_t i = 0; i < n; ++i) {
         const std::string& t = txt(i);
@@ -483,11 +519,33 @@ SourceFile::SourceFile(std::string file, std::string text, const Vocabulary& voc
                     }
                 }
             }
-            // A constexpr variable becomes const in a relaxed schema (computed at start-up, so its mutants can
-            // be selected at run time); a constexpr function then runs at run time too. Not so for consteval,
-            // constinit and static members (a static const double member cannot have an initializer).
-            const bool relaxable = t == "constexpr" && !(i > 0 && txt(i - 1) == "static");
-            if (relaxable && !function) relax_tokens_.push_back(i);
+            // A relaxed schema computes constexpr tables at start-up, so that their mutants can be selected at
+            // run time: a constexpr variable becomes const, a constexpr function inline (GCC rejects a call of the
+            // schema's run-time choice in a constexpr function's body, and names one such call per function and
+            // compile: kept constexpr, a function with n sites would cost n failed compiles) and a lambda's
+            // constexpr goes. Not so for consteval, constinit and static data members (a static const double
+            // member cannot have an initializer).
+            const bool lambda = i > 0 && (txt(i - 1) == ")" || txt(i - 1) == "]");
+            const bool relaxable = t == "constexpr" && (function || lambda || !(i > 0 && txt(i - 1) == "static"));
+            if (relaxable) relax_tokens_.push_back({i, function ? "inline" : lambda ? "" : "const"});
+            if (relaxable && !function && !lambda && j < n && at_namespace_scope(i)) {
+                // A table computed at start-up in a relaxed schema: its bytes are digested there (tables_).
+                Table tab;
+                tab.end = j;
+                for (const auto& [first, last] : top_level_pieces(i + 1, j)) {
+                    // the declared name: the identifier before the piece's first top-level '=', '{' or '['
+                    for (std::size_t k = first + 1; k < last; ++k) {
+                        const std::string& u = txt(k);
+                        if (u == "=" || u == "{" || u == "[") {
+                            if (kind(k - 1) == TokenKind::identifier) tab.names.push_back(txt(k - 1));
+                            break;
+                        }
+                        if ((u == "(" || (u == "<" && info[k].template_open)) && info[k].match != std::string::npos)
+                            k = info[k].match;
+                    }
+                }
+                if (!tab.names.empty()) tables_.push_back(std::move(tab));
+            }
             for (std::size_t k = i; k <= std::min(j, n - 1); ++k) {
                 info[k].constant = true;
                 if (!relaxable) info[k].hard = true;
@@ -499,11 +557,25 @@ SourceFile::SourceFile(std::string file, std::string text, const Vocabulary& voc
     // expressions (or may be used in one): their sites are rebuilt alone.
     {
         std::vector<char> declarator(n, 0);
+        // "T* name[" declares an array of pointers; "x * name[" multiplies: the '*' (or '&') must follow a type
+        // that starts a declaration (after ; { } ( , or a specifier such as const), not an operand
+        auto pointer_declarator = [&](std::size_t star) {
+            if (star < 1) return false;
+            std::size_t t = star - 1;
+            if (type_words().count(txt(t)) || info[t].template_close) return true;
+            if (kind(t) != TokenKind::identifier || keywords().count(txt(t))) return false;
+            while (t >= 2 && txt(t - 1) == "::" && kind(t - 2) == TokenKind::identifier) t -= 2;  // a::b::T
+            if (t == 0) return true;
+            const std::string& before = txt(t - 1);
+            return before == ";" || before == "{" || before == "}" || before == "(" || before == "," ||
+                   before == "const" || before == "static" || before == "constexpr" || before == "inline" ||
+                   before == "extern" || before == "volatile" || before == "mutable" || before == "thread_local";
+        };
         for (std::size_t i = 2; i < n; ++i) {
             if (txt(i) != "[" || info[i].match == std::string::npos) continue;
             const bool after_name = kind(i - 1) == TokenKind::identifier && !keywords().count(txt(i - 1)) &&
-                                    (type_words().count(txt(i - 2)) || info[i - 2].template_close || txt(i - 2) == "*" ||
-                                     txt(i - 2) == "&" ||
+                                    (type_words().count(txt(i - 2)) || info[i - 2].template_close ||
+                                     ((txt(i - 2) == "*" || txt(i - 2) == "&") && pointer_declarator(i - 2)) ||
                                      (kind(i - 2) == TokenKind::identifier && !keywords().count(txt(i - 2))));
             const bool next_dim = txt(i - 1) == "]" && info[i - 1].match != std::string::npos && declarator[info[i - 1].match];
             if (!after_name && !next_dim) continue;
@@ -848,14 +920,51 @@ inline int coverage_fd() {
     }();
     return fd;
 }
+// Start-up: each schema file's last dynamic initializer calls started(first, last) with its mutants' ids. A site
+// reached before that is reached while the file's tables (constexpr variables of a relaxed schema) are computed;
+// the coverage writes it as -1 - k, a site reached later as k.
+struct IdRange { long first, last; };
+inline IdRange started_files[256];
+inline std::atomic<int> n_started{0};
+inline bool started(long first, long last) {
+    const int i = n_started.load();
+    if (i < 256) {
+        started_files[i] = {first, last};
+        n_started.store(i + 1);
+    }
+    return true;
+}
+inline bool past_startup(long k) {
+    for (int i = 0, n = n_started.load(); i < n; ++i)
+        if (k >= started_files[i].first && k <= started_files[i].last) return true;
+    return false;
+}
 inline void reached(long k) {
     static std::atomic<unsigned char> seen[1 << 16];
-    // a plain load first: sites in loops that several threads run are reached millions of times, and an exchange
-    // each time would bounce the flag's cache line between the cores
-    if (k < 0 || k >= (1 << 16) || seen[k].load(std::memory_order_relaxed) || seen[k].exchange(1)) return;
+    if (k < 0 || k >= (1 << 16)) return;
+    const unsigned char phase = past_startup(k) ? 2 : 1;
+    // a plain load first: sites in loops that several threads run are reached millions of times, and an atomic
+    // read-modify-write each time would bounce the flag's cache line between the cores
+    if ((seen[k].load(std::memory_order_relaxed) & phase) || (seen[k].fetch_or(phase) & phase)) return;
     char buf[32];
-    const int n = std::snprintf(buf, sizeof buf, "%ld\n", k);
+    const int n = std::snprintf(buf, sizeof buf, "%ld\n", phase == 2 ? k : -1 - k);
     (void)!::write(coverage_fd(), buf, static_cast<std::size_t>(n));
+}
+// A table of a relaxed schema, just computed: its size and FNV-1a digest appended to GEOLAB_MUTANT_TABLES. The
+// same lines with a mutant selected prove that the mutant computes the same tables.
+inline bool table(const void* p, std::size_t size) {
+    const char* path = std::getenv("GEOLAB_MUTANT_TABLES");
+    if (!path || !*path) return true;
+    unsigned long long h = 14695981039346656037ull;
+    for (std::size_t i = 0; i < size; ++i) {
+        h ^= static_cast<const unsigned char*>(p)[i];
+        h *= 1099511628211ull;
+    }
+    if (std::FILE* f = std::fopen(path, "a")) {
+        std::fprintf(f, "%zu %016llx\n", size, h);
+        std::fclose(f);
+    }
+    return true;
 }
 inline bool on(long k) {
     if (coverage_fd() >= 0) reached(k);
@@ -1019,8 +1128,15 @@ std::string SourceFile::schema(const std::set<int>& ids, std::vector<Span>* span
                 break;
         }
     }
-    if (relax)
-        for (std::size_t t : relax_tokens_) replace[t] = {"const", {}};
+    std::map<std::size_t, std::string> append;  // token -> text written after it
+    if (relax) {
+        for (const auto& [t, text] : relax_tokens_) replace[t] = {text, {}};
+        for (const Table& tab : tables_)
+            for (std::size_t k = 0; k < tab.names.size(); ++k)
+                append[tab.end] += " static const bool geolab_mutant_table_" + std::to_string(tab.end) + "_" +
+                                   std::to_string(k) + " = " + rt + "table(&" + tab.names[k] + ", sizeof(" +
+                                   tab.names[k] + "));";
+    }
     for (std::size_t w = 0; w < wraps.size(); ++w) wraps_at[wraps[w].first].push_back(w);
     for (std::size_t c = 0; c < choices.size(); ++c) choices_at[choices[c]->first].push_back(c);
     for (auto& v : wraps_at)  // outer (longer) first
@@ -1091,6 +1207,7 @@ std::string SourceFile::schema(const std::set<int>& ids, std::vector<Span>* span
                     if (i == over_tok && over) emit(*over);
                     else if (r != replace.end()) emit_for(r->second.second, r->second.first);
                     else emit(tokens_[i].text);
+                    if (auto a = append.find(i); a != append.end()) emit(a->second);
                     for (std::size_t w : wraps_end[i])
                         if (wraps[w].first >= s) emit_for(wraps[w].ids, wraps[w].suffix);
                 }
@@ -1104,6 +1221,10 @@ std::string SourceFile::schema(const std::set<int>& ids, std::vector<Span>* span
     emit(text_.substr(0, tokens_[0].offset));
     render(0, n - 1, std::string::npos, nullptr);
     emit(text_.substr(tokens_[n - 1].offset + tokens_[n - 1].length));
+    // the file's last dynamic initializer: its sites reached from now on are reached past its start-up
+    if (!mutants_.empty())
+        emit("\nstatic const bool geolab_mutant_started = " + rt + "started(" + std::to_string(first_id_) + ", " +
+             std::to_string(first_id_ + static_cast<int>(mutants_.size()) - 1) + ");\n");
     return out;
 }
 

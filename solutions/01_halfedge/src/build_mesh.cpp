@@ -1,5 +1,6 @@
 // Task 1: build a half-edge mesh from a polygon soup (handout §3).
 #include <algorithm>
+#include <numeric>
 #include <span>
 #include <string>
 #include <vector>
@@ -11,40 +12,38 @@ namespace {
 // BEGIN SOLUTION
 // STUB: // Helper functions of your own can go here.
 
-// A corner k of the soup is the directed edge from soup.indices[k] to the next vertex of its face.
+// A corner k of the soup is the directed edge u→v from soup.indices[k] to the next vertex of its face.
 // `out` lists the corners by their start vertex (a counting sort): the corners leaving u are
-// out[start[u] .. start[u+1]), each stored with the vertex it goes to. A bucket of typical size (at most
-// kScanned corners: one or two cache lines) is scanned; a longer one is sorted by (to, corner) and searched by
-// bisection, so a fan's apex (thousands of corners) costs O(log valence) a look-up, not O(valence).
+// out[start[u] .. start[u+1]), each stored as the vertex it goes to and its half-edge h(u→v), invalid until the
+// build makes it. Besides the mesh, these two arrays are all the memory the build uses: 8 bytes a corner.
+// A bucket of typical size (at most kScanned corners: one or two cache lines) is scanned; a longer one is sorted
+// by `to` and bisected, so a fan's apex (thousands of corners) costs O(log valence) a look-up, not O(valence).
 struct DirectedEdges {
     struct Out {
         std::uint32_t to;
-        std::uint32_t corner;
-        bool operator<(const Out& o) const { return to < o.to || (to == o.to && corner < o.corner); }
+        Halfedge h;
+    };
+    // The corners u→v: how many there are, and one of them (the only one when count is 1).
+    struct Found {
+        std::size_t count;
+        Out* corner;
     };
     static constexpr std::size_t kScanned = 16;
     std::vector<std::uint32_t> start;
     std::vector<Out> out;
 
+    std::span<Out> leaving(std::uint32_t u) { return {out.data() + start[u], out.data() + start[u + 1]}; }
     std::span<const Out> leaving(std::uint32_t u) const { return {out.data() + start[u], out.data() + start[u + 1]}; }
-    // How many corners go from u to v; `other` is one of them that is not corner `skip` (invalid_index if none).
-    std::size_t count(std::uint32_t u, std::uint32_t v, std::uint32_t skip, std::uint32_t& other) const {
+    Found find(std::uint32_t u, std::uint32_t v) {
         const auto l = leaving(u);
-        other = invalid_index;
         if (l.size() <= kScanned) {
-            std::size_t n = 0;
-            for (const Out& o : l)
-                if (o.to == v) {
-                    ++n;
-                    if (o.corner != skip) other = o.corner;
-                }
-            return n;
+            Found found{0, nullptr};
+            for (Out& o : l)
+                if (o.to == v) found = {found.count + 1, &o};
+            return found;
         }
-        const auto first = std::lower_bound(l.begin(), l.end(), Out{v, 0});
-        const auto last = std::lower_bound(first, l.end(), Out{v + 1, 0});  // v + 1: v < n_vertices, no overflow
-        for (auto it = first; it != last && other == invalid_index; ++it)
-            if (it->corner != skip) other = it->corner;
-        return static_cast<std::size_t>(last - first);
+        const auto same = std::ranges::equal_range(l, v, {}, &Out::to);
+        return {same.size(), same.data()};
     }
 };
 
@@ -60,44 +59,44 @@ DirectedEdges bucket_by_start(const PolygonSoup& soup) {
     DirectedEdges d;
     d.start.assign(soup.n_vertices() + 1, 0);
     for (std::uint32_t u : soup.indices) ++d.start[u];
-    for (std::size_t v = 1; v <= soup.n_vertices(); ++v) d.start[v] += d.start[v - 1];
+    std::partial_sum(d.start.begin(), d.start.end(), d.start.begin());
+    d.out.reserve(soup.indices.size());
+    prefer_huge_pages(d.out);  // 2 MiB pages: fewer page faults (lib memory.hpp)
     d.out.resize(soup.indices.size());
     for (std::size_t f = 0; f < soup.n_faces(); ++f)
         for (std::size_t k = soup.offsets[f]; k < soup.offsets[f + 1]; ++k)
-            d.out[--d.start[soup.indices[k]]] = {corner_target(soup, f, k), static_cast<std::uint32_t>(k)};
-    for (std::size_t v = 0; v < soup.n_vertices(); ++v)
-        if (d.start[v + 1] - d.start[v] > DirectedEdges::kScanned)
-            std::sort(d.out.begin() + d.start[v], d.out.begin() + d.start[v + 1]);
+            d.out[--d.start[soup.indices[k]]] = {corner_target(soup, f, k), Halfedge{}};
+    for (std::uint32_t v = 0; v < soup.n_vertices(); ++v)
+        if (d.leaving(v).size() > DirectedEdges::kScanned) std::ranges::sort(d.leaving(v), {}, &DirectedEdges::Out::to);
     return d;
 }
 
-// The face that corner k belongs to (used for error messages only).
-std::size_t face_of_corner(const PolygonSoup& soup, std::uint32_t k) {
-    return static_cast<std::size_t>(std::upper_bound(soup.offsets.begin(), soup.offsets.end(), k) -
-                                    soup.offsets.begin() - 1);
+// The faces that use the directed edge u→v (and, if `both_ways`, v→u), in increasing order: for error messages
+// only, so a pass over the whole soup is fine.
+std::vector<std::size_t> faces_using(const PolygonSoup& soup, std::uint32_t u, std::uint32_t v, bool both_ways) {
+    std::vector<std::size_t> faces;
+    for (std::size_t f = 0; f < soup.n_faces(); ++f)
+        for (std::size_t k = soup.offsets[f]; k < soup.offsets[f + 1]; ++k) {
+            const std::uint32_t a = soup.indices[k], b = corner_target(soup, f, k);
+            if ((a == u && b == v) || (both_ways && a == v && b == u)) faces.push_back(f);
+        }
+    return faces;
 }
 
-[[noreturn]] void throw_complex_edge(const PolygonSoup& soup, const DirectedEdges& d, std::uint32_t u,
-                                     std::uint32_t v) {
-    std::vector<std::size_t> faces;
-    for (auto o : d.leaving(u))
-        if (o.to == v) faces.push_back(face_of_corner(soup, o.corner));
-    for (auto o : d.leaving(v))
-        if (o.to == u) faces.push_back(face_of_corner(soup, o.corner));
-    std::sort(faces.begin(), faces.end());
+[[noreturn]] void throw_complex_edge(const PolygonSoup& soup, std::uint32_t u, std::uint32_t v) {
     std::string list;
-    for (std::size_t i = 0; i < faces.size(); ++i) list += (i ? ", face " : "face ") + std::to_string(faces[i]);
+    for (std::size_t f : faces_using(soup, u, v, true))
+        list += (list.empty() ? "face " : ", face ") + std::to_string(f);
     throw TopologyError("build_mesh: complex edge between vertex " + std::to_string(std::min(u, v)) + " and vertex " +
                         std::to_string(std::max(u, v)) + ": used by " + list +
                         " (a manifold edge has at most 2 faces)");
 }
 
-[[noreturn]] void throw_orientation(const PolygonSoup& soup, std::uint32_t k1, std::uint32_t k2, std::uint32_t u,
-                                    std::uint32_t v) {
-    throw TopologyError("build_mesh: inconsistent orientation: face " + std::to_string(face_of_corner(soup, k1)) +
-                        " and face " + std::to_string(face_of_corner(soup, k2)) +
-                        " both use the directed edge from vertex " + std::to_string(u) + " to vertex " +
-                        std::to_string(v));
+[[noreturn]] void throw_orientation(const PolygonSoup& soup, std::uint32_t u, std::uint32_t v) {
+    const auto faces = faces_using(soup, u, v, false);  // exactly two
+    throw TopologyError("build_mesh: inconsistent orientation: face " + std::to_string(faces[0]) + " and face " +
+                        std::to_string(faces[1]) + " both use the directed edge from vertex " + std::to_string(u) +
+                        " to vertex " + std::to_string(v));
 }
 
 [[noreturn]] void throw_complex_vertex(std::uint32_t v, std::size_t face_a, std::size_t face_b) {
@@ -106,79 +105,62 @@ std::size_t face_of_corner(const PolygonSoup& soup, std::uint32_t k) {
                         " and face " + std::to_string(std::max(face_a, face_b)) + " are in different fans)");
 }
 
-// The corner v→u that is the twin of corner k = u→v, or invalid_index if there is none (a boundary edge).
-// Throws if the edge has 3+ faces or is used twice in the same direction.
-std::uint32_t find_twin_corner(const PolygonSoup& soup, const DirectedEdges& d, std::uint32_t k, std::uint32_t u,
-                               std::uint32_t v) {
-    std::uint32_t other, twin;
-    const std::size_t n_same = d.count(u, v, k, other), n_twin = d.count(v, u, invalid_index, twin);  // k counts
-    if (n_same + n_twin > 2) throw_complex_edge(soup, d, u, v);
-    if (n_same == 2) throw_orientation(soup, std::min(k, other), std::max(k, other), u, v);
-    return twin;  // invalid_index when there is none
+// h(u→v), the half-edge of the corner u→v of face f. Made with its twin by an earlier corner v→u, or made now by
+// add_edge: its twin is then the matching corner v→u, or, if there is none, a boundary half-edge leaving v, which
+// becomes halfedge(v) (a manifold vertex has at most one). Throws if the edge has 3+ faces or is used twice in the
+// same direction.
+Halfedge corner_halfedge(Mesh& mesh, const PolygonSoup& soup, DirectedEdges& d, std::uint32_t u, std::uint32_t v,
+                         std::size_t f) {
+    const auto twin = d.find(v, u);
+    if (twin.count == 1 && twin.corner->h.is_valid()) return mesh.twin(twin.corner->h);  // made with its twin
+    const auto same = d.find(u, v);  // this corner (and any other u→v)
+    if (same.count + twin.count > 2) throw_complex_edge(soup, u, v);
+    if (same.count == 2) throw_orientation(soup, u, v);
+    const Halfedge h = mesh.add_edge(Vertex{u}, Vertex{v});
+    same.corner->h = h;
+    if (twin.count == 1) {
+        twin.corner->h = mesh.twin(h);
+    } else {
+        // b = v→w, the boundary half-edge already leaving v, is the twin of the corner w→v of another face
+        if (const Halfedge b = mesh.halfedge(Vertex{v}); b.is_valid() && mesh.is_boundary(b))
+            throw_complex_vertex(v, f, mesh.face(mesh.twin(b)).idx);
+        mesh.set_halfedge(Vertex{v}, mesh.twin(h));
+    }
+    return h;
 }
 
-// The half-edge made for each corner, and the boundary half-edge leaving each vertex (if any).
-struct Sides {
-    std::vector<Halfedge> corner_halfedge;
-    std::vector<Halfedge> boundary_out;
-};
-
-// One edge per undirected edge: the corner's half-edge plus its twin, which is the matching corner v→u or,
-// if there is none, a boundary half-edge leaving v.
-Sides add_edges(Mesh& mesh, const PolygonSoup& soup, const DirectedEdges& d) {
-    Sides s{std::vector<Halfedge>(soup.indices.size()), std::vector<Halfedge>(soup.n_vertices())};
-    for (std::size_t f = 0; f < soup.n_faces(); ++f)
-        for (auto k = soup.offsets[f]; k < soup.offsets[f + 1]; ++k) {
-            if (s.corner_halfedge[k].is_valid()) continue;  // made as the twin of an earlier corner
-            const std::uint32_t u = soup.indices[k], v = corner_target(soup, f, k);
-            const std::uint32_t t = find_twin_corner(soup, d, k, u, v);
-            const Halfedge h = mesh.add_edge(Vertex{u}, Vertex{v});
-            s.corner_halfedge[k] = h;
-            if (t != invalid_index) {
-                s.corner_halfedge[t] = mesh.twin(h);
-            } else {  // twin(h) = v→u has no face; a manifold vertex has at most one such half-edge leaving it
-                if (const Halfedge b = s.boundary_out[v]; b.is_valid()) {
-                    // b = v→w is the twin of the only corner w→v (an earlier boundary edge)
-                    const std::uint32_t w = mesh.to_vertex(b).idx;
-                    std::uint32_t corner_wv;
-                    d.count(w, v, invalid_index, corner_wv);
-                    throw_complex_vertex(v, f, face_of_corner(soup, corner_wv));
-                }
-                s.boundary_out[v] = mesh.twin(h);
-            }
-        }
-    return s;
-}
-
-// Faces: link each face's half-edges in the soup's order and set their face.
-void link_faces(Mesh& mesh, const PolygonSoup& soup, const std::vector<Halfedge>& corner_halfedge) {
+// Edges and faces, in one pass over the soup: each corner's half-edge gets its face and the next corner's
+// half-edge as next (the last one the first's); halfedge(f) is its first corner's, halfedge(u) the first corner's
+// leaving u unless a boundary half-edge leaves u.
+void add_faces(Mesh& mesh, const PolygonSoup& soup, DirectedEdges& d) {
     for (std::size_t f = 0; f < soup.n_faces(); ++f) {
         const Face face = mesh.add_face();
-        const auto first = soup.offsets[f], end = soup.offsets[f + 1];
-        mesh.set_halfedge(face, corner_halfedge[first]);
-        for (auto k = first; k < end; ++k) {
-            mesh.set_next(corner_halfedge[k], corner_halfedge[k + 1 < end ? k + 1 : first]);
-            mesh.set_face(corner_halfedge[k], face);
+        Halfedge previous;
+        for (auto k = soup.offsets[f]; k < soup.offsets[f + 1]; ++k) {
+            const std::uint32_t u = soup.indices[k];
+            const Halfedge h = corner_halfedge(mesh, soup, d, u, corner_target(soup, f, k), f);
+            mesh.set_face(h, face);
+            if (!mesh.halfedge(Vertex{u}).is_valid()) mesh.set_halfedge(Vertex{u}, h);
+            if (previous.is_valid())
+                mesh.set_next(previous, h);
+            else
+                mesh.set_halfedge(face, h);
+            previous = h;
         }
+        mesh.set_next(previous, mesh.halfedge(face));
     }
 }
 
-// Vertices and holes: halfedge(v) is any outgoing half-edge, replaced by the boundary one where there is one;
-// the boundary half-edge b = v→u continues with the boundary half-edge leaving u.
-void link_vertices_and_holes(Mesh& mesh, const PolygonSoup& soup, const Sides& s) {
-    for (std::size_t k = 0; k < soup.indices.size(); ++k)
-        if (const Vertex v{soup.indices[k]}; !mesh.halfedge(v).is_valid()) mesh.set_halfedge(v, s.corner_halfedge[k]);
+// Holes: the boundary half-edge b = v→u (halfedge(v) of a boundary vertex) continues with the one leaving u.
+void link_holes(Mesh& mesh) {
     for (Vertex v : mesh.vertices())
-        if (const Halfedge b = s.boundary_out[v.idx]; b.is_valid()) {
-            mesh.set_halfedge(v, b);
-            mesh.set_next(b, s.boundary_out[mesh.to_vertex(b).idx]);
-        }
+        if (const Halfedge b = mesh.halfedge(v); b.is_valid() && mesh.is_boundary(b))
+            mesh.set_next(b, mesh.halfedge(mesh.to_vertex(b)));
 }
 
 // Walk around every vertex from halfedge(v): at a manifold vertex the walk meets every face corner at v.
-// (Hourglass vertices with a boundary were caught in add_edges; this catches those without.)
-void check_single_fans(const Mesh& mesh, const PolygonSoup& soup, const DirectedEdges& d,
-                       const std::vector<Halfedge>& corner_halfedge) {
+// (Hourglass vertices with a boundary were caught in corner_halfedge; this catches those without.)
+void check_single_fans(const Mesh& mesh, const DirectedEdges& d) {
     for (Vertex v : mesh.vertices()) {
         const Halfedge h0 = mesh.halfedge(v);
         if (!h0.is_valid()) continue;
@@ -188,20 +170,19 @@ void check_single_fans(const Mesh& mesh, const PolygonSoup& soup, const Directed
             n_faces_met += !mesh.is_boundary(h);
             h = mesh.next(mesh.twin(h));
         } while (h != h0);
-        const auto n_corners = d.start[v.idx + 1] - d.start[v.idx];
-        if (n_faces_met == n_corners) continue;
-        // Name a face of the fan we walked and a face we did not meet: the first corner at v (in soup order)
-        // whose half-edge the walk did not pass (the fan's half-edges sorted, so the search is O(n log n)).
+        const auto corners = d.leaving(v.idx);
+        if (n_faces_met == corners.size()) continue;
+        // Name a face of the fan we walked and the first face at v (in soup order) that the walk did not meet
+        // (the fan's half-edges sorted, so the search is O(n log n)).
         std::vector<Halfedge> fan;
         for (Halfedge h = h0; fan.empty() || h != h0; h = mesh.next(mesh.twin(h))) fan.push_back(h);
         std::sort(fan.begin(), fan.end());
         std::uint32_t missed = invalid_index;
-        for (auto o : d.leaving(v.idx))
-            if (o.corner < missed && !std::binary_search(fan.begin(), fan.end(), corner_halfedge[o.corner]))
-                missed = o.corner;
+        for (auto o : corners)
+            if (!std::binary_search(fan.begin(), fan.end(), o.h)) missed = std::min(missed, mesh.face(o.h).idx);
         if (missed != invalid_index) {
             Halfedge in_fan = mesh.is_boundary(h0) ? mesh.next(mesh.twin(h0)) : h0;
-            throw_complex_vertex(v.idx, mesh.face(in_fan).idx, face_of_corner(soup, missed));
+            throw_complex_vertex(v.idx, mesh.face(in_fan).idx, missed);
         }
     }
 }
@@ -212,14 +193,13 @@ void check_single_fans(const Mesh& mesh, const PolygonSoup& soup, const Directed
 Mesh build_mesh(const PolygonSoup& soup) {
     // BEGIN SOLUTION
     check_soup(soup);
-    const DirectedEdges d = bucket_by_start(soup);
+    DirectedEdges d = bucket_by_start(soup);
     Mesh mesh;
     mesh.reserve(soup.n_vertices(), soup.indices.size(), soup.n_faces());  // at most one edge per corner
     for (const auto& p : soup.positions) mesh.add_vertex(p);
-    const Sides sides = add_edges(mesh, soup, d);  // twins found, boundary half-edges made
-    link_faces(mesh, soup, sides.corner_halfedge);
-    link_vertices_and_holes(mesh, soup, sides);
-    check_single_fans(mesh, soup, d, sides.corner_halfedge);  // hourglass vertices without boundary
+    add_faces(mesh, soup, d);  // twins found, boundary half-edges made, faces linked
+    link_holes(mesh);
+    check_single_fans(mesh, d);  // hourglass vertices without boundary
     return mesh;
     // END SOLUTION
 }

@@ -54,23 +54,15 @@ void delete_cell(Mesh& mesh, Cell c) {
 void delete_vertex(Mesh& mesh, Vertex v) {
     // BEGIN SOLUTION
     if (mesh.is_deleted(v)) return;
-    std::vector<Edge> edges;
-    for (HalfFace hf : mesh.vertex_halffaces(v)) {
-        HalfEdge h = mesh.halfedge(hf);
-        const HalfEdge h0 = h;
-        do {
-            if (mesh.from_vertex(h) == v || mesh.to_vertex(h) == v) edges.push_back(mesh.edge(h));
-            h = mesh.next(h);
-        } while (h != h0);
-    }
+    // the cells at v: the cells of the half-faces around it
     std::vector<Cell> cells;
-    vertex_cells(mesh, v, cells);
+    for (HalfFace hf : mesh.vertex_halffaces(v))
+        if (mesh.cell(hf).is_valid()) cells.push_back(mesh.cell(hf));
+    std::sort(cells.begin(), cells.end());
+    cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+    // delete_cell takes each face and edge at v with the last cell that used it, and leaves v isolated
     for (Cell c : cells) delete_cell(mesh, c);
-    for (HalfFace hf : mesh.vertex_halffaces(v)) mesh.set_deleted(Mesh::face(hf), true);
-    for (Edge e : edges) mesh.set_deleted(e, true);
-    mesh.set_halfedge(v, HalfEdge{});
     mesh.set_deleted(v, true);
-    mesh.rebuild_vertex_cache();
     // END SOLUTION
 }
 

@@ -46,40 +46,36 @@ void boundary_halffaces(const Mesh& mesh, std::vector<HalfFace>& out) {
 void edge_cells(const Mesh& mesh, Edge e, std::vector<Cell>& out) {
     // BEGIN SOLUTION
     out.clear();
-    const Vertex b = mesh.edge_vertices(e)[1];
-    // Any half-edge of e directed b -> a with a cell: the edge's half-edge, its mate, or the walk to one.
+    // A half-edge of e directed b -> a (b = edge_vertices(e)[1]) in a cell: the edge's half-edge or its mate, or
+    // when that side is a boundary half-face, the twin of the mate (b -> a in the cell on the other side).
     HalfEdge h = mesh.halfedge(e);
     if (!h.is_valid()) return;
-    if (mesh.from_vertex(h) != b) h = mesh.mate(h);
+    if (mesh.from_vertex(h) != mesh.edge_vertices(e)[1]) h = mesh.mate(h);
     if (mesh.is_boundary(mesh.halfface(h))) {
-        // a boundary half-face: the cell on the other side of its face has the same edge reversed (mate), whose
-        // twin is b -> a in that cell
         const HalfEdge g = mesh.mate(h);
         if (mesh.is_boundary(mesh.halfface(g))) return;  // a face with no cell on either side
         h = mesh.twin(g);
     }
-    // Walk backwards to the start: the previous cell's b -> a half-edge is twin(mate(h)).
+    // Forwards: the next cell's b -> a half-edge is mate(twin(h)); stop back at the start (an interior edge: a
+    // full turn) or at a boundary half-face (the end of a fan).
     const HalfEdge start = h;
-    for (;;) {
-        const HalfEdge back = mesh.mate(h);
-        if (mesh.is_boundary(mesh.halfface(back))) break;  // h's cell is the first of a fan
-        h = mesh.twin(back);
-        if (h == start) {  // a full turn: start at the lowest cell
-            HalfEdge best = h;
-            HalfEdge g = h;
-            do {
-                g = mesh.mate(mesh.twin(g));
-                if (mesh.cell(mesh.halfface(g)) < mesh.cell(mesh.halfface(best))) best = g;
-            } while (g != h);
-            h = best;
-            break;
-        }
-    }
-    const HalfEdge first = h;
     do {
         out.push_back(mesh.cell(mesh.halfface(h)));
         h = mesh.mate(mesh.twin(h));
-    } while (h != first && !mesh.is_boundary(mesh.halfface(h)));
+    } while (h != start && !mesh.is_boundary(mesh.halfface(h)));
+    if (h == start) {  // a full turn: start at the lowest cell
+        std::rotate(out.begin(), std::min_element(out.begin(), out.end()), out.end());
+        return;
+    }
+    // A fan: the cells before the start, backwards (the previous cell's b -> a half-edge is twin(mate(h))), go
+    // in front, so that the list starts at the boundary.
+    const std::size_t n_forward = out.size();
+    for (h = start; !mesh.is_boundary(mesh.halfface(mesh.mate(h)));) {
+        h = mesh.twin(mesh.mate(h));
+        out.push_back(mesh.cell(mesh.halfface(h)));
+    }
+    std::reverse(out.begin() + std::ptrdiff_t(n_forward), out.end());
+    std::rotate(out.begin(), out.begin() + std::ptrdiff_t(n_forward), out.end());
     // END SOLUTION
 }
 

@@ -16,12 +16,12 @@ namespace {
 struct Sets {
     std::vector<std::uint32_t> parent;
     explicit Sets(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
-    std::uint32_t find(std::uint32_t x) {
-        while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    std::uint32_t root(std::uint32_t x) {
+        for (; parent[x] != x; x = parent[x]) parent[x] = parent[parent[x]];
         return x;
     }
     void join(std::uint32_t a, std::uint32_t b) {
-        a = find(a), b = find(b);
+        a = root(a), b = root(b);
         if (a != b) parent[std::max(a, b)] = std::min(a, b);
     }
 };
@@ -32,7 +32,7 @@ std::uint32_t number_sets(Sets& sets, const std::vector<std::uint8_t>& member, s
     index.assign(member.size(), invalid_index);
     std::uint32_t n = 0;
     for (std::uint32_t i = 0; i < member.size(); ++i)
-        if (member[i]) index[i] = sets.find(i) == i ? n++ : index[sets.find(i)];
+        if (member[i]) index[i] = sets.root(i) == i ? n++ : index[sets.root(i)];
     return n;
 }
 

@@ -34,9 +34,9 @@ double volume_smoothing(Mesh& mesh, double t, int iterations) {
             sum[a.idx] += mesh.position(b), sum[b.idx] += mesh.position(a);
             ++degree[a.idx], ++degree[b.idx];
         }
-        for (Vertex v : mesh.vertices()) {
+        for (Vertex v : mesh.vertices()) {  // an interior vertex has edges: degree > 0
             glm::dvec3 p = mesh.position(v);
-            if (!fixed[v.idx] && degree[v.idx] > 0) p += t * (sum[v.idx] / double(degree[v.idx]) - p);
+            if (!fixed[v.idx]) p += t * (sum[v.idx] / double(degree[v.idx]) - p);
             mesh.set(next_pos, v, p);
         }
         for (Vertex v : mesh.vertices())
@@ -44,22 +44,17 @@ double volume_smoothing(Mesh& mesh, double t, int iterations) {
     }
     mesh.remove_property(next_pos);
 
+    // The minimum signed volume over the tetrahedra (cells with 4 faces). With h = a -> b the first half-edge of
+    // the first half-face (a, b, c), twin(h) runs b -> a in the face (b, a, d): next(twin(h)) ends at the apex d.
+    // The loop (a, b, c) is counter-clockwise seen from outside, so d is behind it and the determinant is negative.
     double min_volume = std::numeric_limits<double>::infinity();
     for (Cell c : mesh.cells()) {
-        if (mesh.is_deleted(c)) continue;
-        const auto hfs = mesh.halffaces(c);
-        std::vector<Vertex> corners;
-        cell_vertices(mesh, c, corners);
-        if (hfs.size() != 4 || corners.size() != 4) continue;
-        halfface_vertices(mesh, hfs[0], loop);
-        Vertex d;
-        for (Vertex x : corners)
-            if (x != loop[0] && x != loop[1] && x != loop[2]) d = x;
-        const glm::dvec3 a = mesh.position(loop[0]);
-        // the loop is counter-clockwise seen from outside: d is behind it, so the determinant is negative
-        const double det = glm::dot(glm::cross(mesh.position(loop[1]) - a, mesh.position(loop[2]) - a),
-                                    mesh.position(d) - a);
-        min_volume = std::min(min_volume, -det / 6.0);
+        if (mesh.is_deleted(c) || mesh.halffaces(c).size() != 4) continue;
+        const HalfEdge h = mesh.halfedge(mesh.halffaces(c)[0]);
+        const glm::dvec3 a = mesh.position(mesh.from_vertex(h)), b = mesh.position(mesh.to_vertex(h));
+        const glm::dvec3 cc = mesh.position(mesh.to_vertex(mesh.next(h)));
+        const glm::dvec3 d = mesh.position(mesh.to_vertex(mesh.next(mesh.twin(h))));
+        min_volume = std::min(min_volume, -glm::dot(glm::cross(b - a, cc - a), d - a) / 6.0);
     }
     return min_volume;
     // END SOLUTION

@@ -31,9 +31,10 @@ int span_of(const BSpline& s, double t, const char* who, bool allow_end) {
     if (!(t >= lo && (t < hi || (allow_end && t == hi))))
         throw std::invalid_argument(std::string(who) + ": t = " + std::to_string(t) + " is outside the domain [" +
                                     std::to_string(lo) + ", " + std::to_string(hi) + "]");
-    int k = p;
-    while (k < n && s.knots[k + 1] <= t) ++k;
-    while (s.knots[k] == s.knots[k + 1]) --k;  // t at the domain's end: the last non-empty span
+    // The largest non-empty span starting at or before t: t_k ≤ t < t_(k+1) inside the domain, the last non-empty
+    // span at its end (t_p ≤ t, and a non-empty span starts at or after p, so k stops at p or above).
+    int k = n;
+    while (s.knots[k] > t || s.knots[k] == s.knots[k + 1]) --k;
     return k;
 }
 // END SOLUTION
@@ -50,9 +51,10 @@ glm::dvec3 rational_point(const RationalCurve& c, double t) {
         if (!(c.weights[k] > 0)) throw std::invalid_argument("rational_point: weight " + std::to_string(k) + " <= 0");
         h[k] = glm::dvec4(c.weights[k] * c.points[k], c.weights[k]);
     }
-    for (std::size_t r = 1; r < h.size(); ++r)
-        for (std::size_t k = 0; k + r < h.size(); ++k) h[k] = (1.0 - t) * h[k] + t * h[k + 1];
-    return glm::dvec3(h[0]) / h[0].w;
+    const std::size_t n = h.size() - 1;  // de Casteljau in place from the back (basics.cpp): h[n] = the point
+    for (std::size_t r = 1; r <= n; ++r)
+        for (std::size_t k = n; k >= r; --k) h[k] = (1.0 - t) * h[k - 1] + t * h[k];
+    return glm::dvec3(h[n]) / h[n].w;
     // END SOLUTION
 }
 

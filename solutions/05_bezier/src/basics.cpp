@@ -19,20 +19,24 @@ double bernstein(int n, int i, double t) {
 glm::dvec2 de_casteljau(const Poly2& P, double t) {
     // BEGIN SOLUTION
     if (P.empty()) throw std::invalid_argument("de_casteljau: no control points");
+    // In place from the back: after round r, b[k] = P_(k−r)^r for k = r..n; b[n] ends as P_0^n.
     Poly2 b = P;
-    for (std::size_t r = 1; r < P.size(); ++r)
-        for (std::size_t k = 0; k + r < P.size(); ++k) b[k] = (1.0 - t) * b[k] + t * b[k + 1];
-    return b[0];
+    const std::size_t n = P.size() - 1;
+    for (std::size_t r = 1; r <= n; ++r)
+        for (std::size_t k = n; k >= r; --k) b[k] = (1.0 - t) * b[k - 1] + t * b[k];
+    return b[n];
     // END SOLUTION
 }
 
 glm::dvec3 de_casteljau(const Poly3& P, double t) {
     // BEGIN SOLUTION
     if (P.empty()) throw std::invalid_argument("de_casteljau: no control points");
+    // In place from the back: after round r, b[k] = P_(k−r)^r for k = r..n; b[n] ends as P_0^n.
     Poly3 b = P;
-    for (std::size_t r = 1; r < P.size(); ++r)
-        for (std::size_t k = 0; k + r < P.size(); ++k) b[k] = (1.0 - t) * b[k] + t * b[k + 1];
-    return b[0];
+    const std::size_t n = P.size() - 1;
+    for (std::size_t r = 1; r <= n; ++r)
+        for (std::size_t k = n; k >= r; --k) b[k] = (1.0 - t) * b[k - 1] + t * b[k];
+    return b[n];
     // END SOLUTION
 }
 

@@ -12,8 +12,13 @@ namespace geolab::bezier {
 namespace {
 // BEGIN SOLUTION
 // STUB: // Helper functions of your own can go here.
+// x and y equal within tol · (1 + the larger length).
 bool same(const glm::dvec3& x, const glm::dvec3& y, double tol) {
     return glm::length(x - y) <= tol * (1.0 + std::max(glm::length(x), glm::length(y)));
+}
+// x and y non-zero with unit vectors equal within tol (a zero vector gives 0/0 = NaN: never parallel).
+bool parallel(const glm::dvec3& x, const glm::dvec3& y, double tol) {
+    return glm::length(x / glm::length(x) - y / glm::length(y)) <= tol;
 }
 // END SOLUTION
 }  // namespace
@@ -21,9 +26,10 @@ bool same(const glm::dvec3& x, const glm::dvec3& y, double tol) {
 glm::dvec3 evaluate_composite(const std::vector<Poly3>& segments, double u) {
     // BEGIN SOLUTION
     if (segments.empty()) throw std::invalid_argument("evaluate_composite: no segment");
-    for (std::size_t k = 0; k < segments.size(); ++k)
-        if (segments[k].empty())
-            throw std::invalid_argument("evaluate_composite: segment " + std::to_string(k) + " is empty");
+    const auto empty = std::find_if(segments.begin(), segments.end(), [](const Poly3& s) { return s.empty(); });
+    if (empty != segments.end())
+        throw std::invalid_argument("evaluate_composite: segment " + std::to_string(empty - segments.begin()) +
+                                    " is empty");
     const double m = double(segments.size());
     if (!(u >= 0 && u <= m))
         throw std::invalid_argument("evaluate_composite: u = " + std::to_string(u) + " is outside [0, " +
@@ -37,26 +43,17 @@ Continuity continuity(const Poly3& a, const Poly3& b, double tol) {
     // BEGIN SOLUTION
     if (a.empty() || b.empty()) throw std::invalid_argument("continuity: a curve without control points");
     if (!(tol >= 0)) throw std::invalid_argument("continuity: tol must be >= 0");
-    // da[k] = a^(k)(1), db[k] = b^(k)(0), k = 0..3
-    glm::dvec3 da[4], db[4];
+    // Order k = 0..3: A = a^(k), B = b^(k) as Bézier curves; compare a^(k)(1) = A's last point with b^(k)(0).
+    Continuity c;
     Poly3 A = a, B = b;
-    for (int k = 0; k < 4; ++k) {
-        da[k] = A.back();
-        db[k] = B.front();
+    for (int k = 0; k <= 3; ++k) {
+        if (!same(A.back(), B.front(), tol)) {
+            if (k > 0 && parallel(A.back(), B.front(), tol)) c.g_order = k;  // G^k = C^(k−1) + parallel k-th
+            break;
+        }
+        c.c_order = c.g_order = k;
         A = hodograph(A);
         B = hodograph(B);
-    }
-    Continuity c;
-    int k = 0;
-    while (k < 4 && same(da[k], db[k], tol)) ++k;
-    c.c_order = k - 1;  // C^(k-1) holds, C^k not (or k = 4)
-    if (c.c_order < 0) return c;
-    c.c_order = std::min(c.c_order, 3);
-    c.g_order = c.c_order;
-    if (c.c_order < 3) {
-        const glm::dvec3 x = da[c.c_order + 1], y = db[c.c_order + 1];
-        const double lx = glm::length(x), ly = glm::length(y);
-        if (lx > 0 && ly > 0 && glm::length(x / lx - y / ly) <= tol) c.g_order = c.c_order + 1;
     }
     return c;
     // END SOLUTION

@@ -18,8 +18,7 @@ Poly2 flatten_contour(const std::vector<QuadSegment>& contour, double tol) {
         const double dd = glm::length(s[0] - 2.0 * s[1] + s[2]);
         const int m = std::max(1, int(std::ceil(std::sqrt(dd / (4 * tol)))));
         const Poly2 P{s[0], s[1], s[2]};
-        out.push_back(s[0]);
-        for (int k = 1; k < m; ++k) out.push_back(de_casteljau(P, double(k) / m));
+        for (int k = 0; k < m; ++k) out.push_back(de_casteljau(P, double(k) / m));  // C(0) = P_0 exactly
     }
     return out;
     // END SOLUTION

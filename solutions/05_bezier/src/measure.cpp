@@ -16,61 +16,53 @@ namespace {
 // BEGIN SOLUTION
 // STUB: // Helper functions of your own can go here.
 
-// Gauss–Legendre nodes and weights on [−1, 1] for N points: Newton on the Legendre polynomial P_N.
-template <int N>
-struct GaussLegendre {
-    std::array<double, N> x{}, w{};
-    GaussLegendre() {
-        for (int i = 0; i < N; ++i) {
-            double z = std::cos(std::numbers::pi * (i + 0.75) / (N + 0.5)), dp = 0;
-            for (int it = 0; it < 100; ++it) {
-                double p0 = 1, p1 = z;  // P_0, P_1; recurrence up to P_N
-                for (int k = 2; k <= N; ++k) {
-                    const double p2 = ((2 * k - 1) * z * p1 - (k - 1) * p0) / k;
-                    p0 = p1;
-                    p1 = p2;
-                }
-                dp = N * (z * p1 - p0) / (z * z - 1);
-                const double dz = p1 / dp;
-                z -= dz;
-                if (std::abs(dz) < 1e-16) break;
-            }
-            x[i] = z;
-            w[i] = 2 / ((1 - z * z) * dp * dp);
-        }
-    }
+// Gauss–Legendre rules on [−1, 1]: the non-negative roots x of the Legendre polynomial P_N and their weights w
+// (the rule uses ±x, and x = 0 once when N is odd). Computed by Newton on P_N in 60-digit arithmetic.
+struct Node {
+    double x, w;
 };
+constexpr std::array<Node, 3> gl5{{{0.0, 0.5688888888888889},
+                                   {0.5384693101056831, 0.47862867049936647},
+                                   {0.906179845938664, 0.23692688505618908}}};
+constexpr std::array<Node, 5> gl10{{{0.14887433898163122, 0.29552422471475287},
+                                    {0.4333953941292472, 0.26926671930999635},
+                                    {0.6794095682990244, 0.21908636251598204},
+                                    {0.8650633666889845, 0.1494513491505806},
+                                    {0.9739065285171717, 0.06667134430868814}}};
 
-template <int N>
-double gauss(const Poly3& D, double a, double b) {
-    static const GaussLegendre<N> g;
+// ∫_a^b |C'| by the rule mapped to [a, b]; D is C's hodograph.
+template <std::size_t N>
+double gauss(const Poly3& D, double a, double b, const std::array<Node, N>& rule) {
     const double h = 0.5 * (b - a), m = 0.5 * (a + b);
+    auto speed = [&](double t) { return glm::length(de_casteljau(D, t)); };
     double s = 0;
-    for (int i = 0; i < N; ++i) s += g.w[i] * glm::length(de_casteljau(D, m + h * g.x[i]));
+    for (const Node& q : rule) s += q.w * (q.x == 0 ? speed(m) : speed(m + h * q.x) + speed(m - h * q.x));
     return s * h;
 }
 
-double adapt(const Poly3& D, double a, double b, double tol, int depth) {
-    const double g5 = gauss<5>(D, a, b), g10 = gauss<10>(D, a, b);
-    // Done when the rules agree to tol, or to rounding (a tol below rounding would otherwise split to depth 50
-    // everywhere).
-    if (std::abs(g10 - g5) <= std::max(tol, 1e-14 * std::abs(g10)) || depth >= 50) return g10;
-    const double m = 0.5 * (a + b);
-    return adapt(D, a, m, 0.5 * tol, depth + 1) + adapt(D, m, b, 0.5 * tol, depth + 1);
+// ∫_a^b |C'| by the adaptive rule: the 10-point value where the 5- and 10-point values differ by at most this
+// interval's share of tol, tol · (b − a) / whole (compared without the division: whole may be 0), or where [a, b]
+// cannot be halved in double; otherwise the sum over the two halves.
+double adapt(const Poly3& D, double a, double b, double tol, double whole) {
+    const double g5 = gauss(D, a, b, gl5), g10 = gauss(D, a, b, gl10), m = 0.5 * (a + b);
+    if (std::abs(g10 - g5) * whole <= tol * (b - a) || m <= a || m >= b) return g10;
+    return adapt(D, a, m, tol, whole) + adapt(D, m, b, tol, whole);
 }
 
-// Candidate parameters of extremes of the polynomial with Bernstein coefficients c on [a, b]: where its
-// derivative (coefficients d) changes sign.
-void derivative_roots(const std::vector<double>& d, double a, double b, std::vector<double>& out, int depth) {
-    const auto [lo, hi] = std::minmax_element(d.begin(), d.end());
-    if (*lo >= 0 || *hi <= 0) return;  // no sign change of the derivative inside (convex hull)
-    if (depth > 40) {  // the interval is 2^-41 wide: its midpoint is the root to far below rounding of C
-        out.push_back(0.5 * (a + b));
+// The roots in (a, b) of the polynomial with Bernstein coefficients c on [a, b], in increasing order: none where
+// the coefficients do not change sign (convex hull); otherwise both halves (split by de Casteljau at ½), the split
+// point itself when the polynomial is exactly 0 there, and at width 2^-40 the midpoint (within 2^-41 of the root:
+// far below what moves C at a stationary point).
+void roots(const std::vector<double>& c, double a, double b, std::vector<double>& out, int depth) {
+    const auto [lo, hi] = std::minmax_element(c.begin(), c.end());
+    if (*lo >= 0 || *hi <= 0) return;
+    const double m = 0.5 * (a + b);
+    if (depth == 40) {
+        out.push_back(m);
         return;
     }
-    // Split the Bernstein coefficients at 1/2 (de Casteljau).
-    const std::size_t n = d.size() - 1;
-    std::vector<double> l(n + 1), r(n + 1), w = d;
+    const std::size_t n = c.size() - 1;
+    std::vector<double> l(n + 1), r(n + 1), w = c;
     l[0] = w[0];
     r[n] = w[n];
     for (std::size_t k = 1; k <= n; ++k) {
@@ -78,10 +70,26 @@ void derivative_roots(const std::vector<double>& d, double a, double b, std::vec
         l[k] = w[0];
         r[n - k] = w[n - k];
     }
-    const double m = 0.5 * (a + b);
-    out.push_back(m);  // a root exactly at the split point would be lost by both halves (a curve point: harmless)
-    derivative_roots(l, a, m, out, depth + 1);
-    derivative_roots(r, m, b, out, depth + 1);
+    roots(l, a, m, out, depth + 1);
+    if (l[n] == 0) out.push_back(m);  // the value at m: a root there is lost by both halves
+    roots(r, m, b, out, depth + 1);
+}
+
+double binomial(int n, int k) {
+    double c = 1;
+    for (int i = 1; i <= k; ++i) c = c * (n - k + i) / i;
+    return c;
+}
+
+// The Bernstein coefficients (degree p + q) of A(t) · B(t) for Bézier curves A (degree p) and B (degree q):
+// c_k = Σ_(i+j=k) C(p, i) C(q, j) / C(p + q, k) A_i · B_j.
+std::vector<double> dot_product(const Poly3& A, const Poly3& B) {
+    const int p = int(A.size()) - 1, q = int(B.size()) - 1;
+    std::vector<double> c(p + q + 1, 0.0);
+    for (int i = 0; i <= p; ++i)
+        for (int j = 0; j <= q; ++j)
+            c[i + j] += binomial(p, i) * binomial(q, j) / binomial(p + q, i + j) * glm::dot(A[i], B[j]);
+    return c;
 }
 
 // END SOLUTION
@@ -92,54 +100,68 @@ double arc_length(const Poly3& P, double a, double b, double tol) {
     if (P.empty()) throw std::invalid_argument("arc_length: no control points");
     if (!(tol > 0)) throw std::invalid_argument("arc_length: tol must be > 0");
     if (!(0 <= a && a <= b && b <= 1)) throw std::invalid_argument("arc_length: need 0 <= a <= b <= 1");
-    if (a == b || P.size() == 1) return 0.0;
-    return adapt(hodograph(P), a, b, 0.5 * tol, 0);
+    const Poly3 D = hodograph(P);
+    double dmax = 0;  // |C'| ≤ dmax (convex hull); its rounding is about 1e-16 dmax
+    for (const auto& d : D) {
+        const double len = glm::length(d);
+        if (!std::isfinite(len))
+            throw std::invalid_argument("arc_length: |C'| is not finite (a control point too large or not finite)");
+        dmax = std::max(dmax, len);
+    }
+    // Pieces between the stationary points of the speed (roots of C' · C''): |C'| is smooth on each, a cusp (where
+    // it has a kink) is the end of a piece.
+    std::vector<double> ends{a};
+    std::vector<double> cuts;
+    roots(dot_product(D, hodograph(D)), 0.0, 1.0, cuts, 0);
+    for (double t : cuts)
+        if (t > a && t < b) ends.push_back(t);
+    ends.push_back(b);
+    const double rounding_tol = 1e-14 * dmax * (b - a);
+    double length = 0;
+    for (std::size_t k = 0; k + 1 < ends.size(); ++k)
+        length += adapt(D, ends[k], ends[k + 1], std::max(tol, rounding_tol), b - a);
+    return length;
     // END SOLUTION
 }
 
 double parameter_at_length(const Poly3& P, double s, double tol) {
     // BEGIN SOLUTION
-    const double total = arc_length(P, 0, 1, 0.25 * tol);
+    const double total = arc_length(P, 0, 1, 0.5 * tol);
     if (s < 0 || s > total + tol)
         throw std::invalid_argument("parameter_at_length: s = " + std::to_string(s) + " is outside [0, " +
                                     std::to_string(total) + "]");
-    const Poly3 D = hodograph(P);
-    double lo = 0, hi = 1, t = total > 0 ? std::clamp(s / total, 0.0, 1.0) : 0.0;
-    for (int it = 0; it < 200; ++it) {
-        const double f = arc_length(P, 0, t, 0.25 * tol) - s;
-        if (std::abs(f) <= 0.5 * tol) return t;
-        if (f > 0) hi = t; else lo = t;
-        const double speed = glm::length(de_casteljau(D, t));
-        double next = speed > 0 ? t - f / speed : 0.5 * (lo + hi);
-        if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);  // Newton left the bracket: bisect
-        t = next;
+    // Bisection on length(0, t) − s (increasing in t): lengths within tol/2, stop within tol/2 (or when the
+    // bracket is two neighbouring doubles).
+    double lo = 0, hi = 1;
+    for (;;) {
+        const double t = 0.5 * (lo + hi);
+        const double f = arc_length(P, 0, t, 0.5 * tol) - s;
+        if (std::abs(f) <= 0.5 * tol || t <= lo || t >= hi) return t;
+        (f > 0 ? hi : lo) = t;
     }
-    return t;
     // END SOLUTION
 }
 
 Box bounding_box(const Poly3& P) {
     // BEGIN SOLUTION
     if (P.empty()) throw std::invalid_argument("bounding_box: no control points");
-    Box box{P.front(), P.front()};
-    auto grow = [&](const glm::dvec3& p) {
-        box.lo = glm::min(box.lo, p);
-        box.hi = glm::max(box.hi, p);
-    };
-    grow(P.back());
-    if (P.size() < 3) return box;  // a point or a segment: the ends
+    Box box{glm::min(P.front(), P.back()), glm::max(P.front(), P.back())};
     const Poly3 D = hodograph(P);
-    for (int axis = 0; axis < 3; ++axis) {
-        std::vector<double> d(D.size());
+    // Per axis: C at the candidate roots of that coordinate of C' (a polynomial with D's coordinates as its
+    // Bernstein coefficients).
+    auto extend = [&](int axis) {
+        std::vector<double> d(D.size()), candidates;
         for (std::size_t k = 0; k < D.size(); ++k) d[k] = D[k][axis];
-        std::vector<double> roots;
-        derivative_roots(d, 0.0, 1.0, roots, 0);
-        for (double t : roots) {
-            const glm::dvec3 p = de_casteljau(P, t);
-            box.lo[axis] = std::min(box.lo[axis], p[axis]);
-            box.hi[axis] = std::max(box.hi[axis], p[axis]);
+        roots(d, 0.0, 1.0, candidates, 0);
+        for (double t : candidates) {
+            const double x = de_casteljau(P, t)[axis];
+            box.lo[axis] = std::min(box.lo[axis], x);
+            box.hi[axis] = std::max(box.hi[axis], x);
         }
-    }
+    };
+    extend(0);
+    extend(1);
+    extend(2);
     return box;
     // END SOLUTION
 }
@@ -147,31 +169,18 @@ Box bounding_box(const Poly3& P) {
 Closest closest_point(const Poly3& P, const glm::dvec3& q) {
     // BEGIN SOLUTION
     if (P.empty()) throw std::invalid_argument("closest_point: no control points");
-    const Poly3 D = hodograph(P), DD = hodograph(D);
-    const int samples = 64 * int(P.size());
-    std::vector<double> dist(samples + 1);
-    for (int i = 0; i <= samples; ++i) dist[i] = glm::length(de_casteljau(P, double(i) / samples) - q);
+    // The nearest point is an end or a stationary point of |C(t) − q|: a root of (C − q) · C'. Candidates in
+    // increasing t (t = 0 first, as the start), so the first of equally near points (the smallest t) is kept.
+    Poly3 R = P;  // C − q
+    for (auto& r : R) r -= q;
+    std::vector<double> candidates;
+    roots(dot_product(R, hodograph(P)), 0.0, 1.0, candidates, 0);
+    candidates.push_back(1.0);
     Closest best{0.0, P.front(), glm::length(P.front() - q)};
-    auto consider = [&](double t) {
+    for (double t : candidates) {
         const glm::dvec3 p = de_casteljau(P, t);
         const double d = glm::length(p - q);
         if (d < best.distance) best = Closest{t, p, d};
-    };
-    consider(1.0);
-    for (int i = 0; i <= samples; ++i) {
-        const bool local_min = (i == 0 || dist[i] <= dist[i - 1]) && (i == samples || dist[i] <= dist[i + 1]);
-        if (!local_min) continue;
-        double t = double(i) / samples;
-        for (int it = 0; it < 30; ++it) {
-            const glm::dvec3 r = de_casteljau(P, t) - q, d1 = de_casteljau(D, t), d2 = de_casteljau(DD, t);
-            const double f = glm::dot(r, d1), fp = glm::dot(d1, d1) + glm::dot(r, d2);
-            if (fp <= 0) break;
-            const double next = std::clamp(t - f / fp, 0.0, 1.0);
-            if (std::abs(next - t) < 1e-16) break;
-            t = next;
-        }
-        consider(t);
-        consider(double(i) / samples);
     }
     return best;
     // END SOLUTION

@@ -67,13 +67,13 @@ glm::dvec3 second_derivative(const Poly3& P, double t) {
 Poly3 elevate(const Poly3& P) {
     // BEGIN SOLUTION
     if (P.empty()) throw std::invalid_argument("elevate: no control points");
+    // P_k goes into Q_k with weight 1 − k/(n+1) and into Q_(k+1) with weight (k+1)/(n+1): the ends get P_0 and
+    // P_n alone, every inner Q_k its two terms of the formula.
     const std::size_t n = P.size() - 1;
-    Poly3 Q(n + 2);
-    Q[0] = P[0];
-    Q[n + 1] = P[n];
-    for (std::size_t k = 1; k <= n; ++k) {
-        const double a = double(k) / double(n + 1);
-        Q[k] = a * P[k - 1] + (1.0 - a) * P[k];
+    Poly3 Q(n + 2, glm::dvec3(0.0));
+    for (std::size_t k = 0; k <= n; ++k) {
+        Q[k] += (1.0 - double(k) / double(n + 1)) * P[k];
+        Q[k + 1] += (double(k + 1) / double(n + 1)) * P[k];
     }
     return Q;
     // END SOLUTION

@@ -1,7 +1,8 @@
 // Task 5: tensor-product patches — points, partial derivatives, normals, tessellation (handout §6).
 #include <cmath>
 #include <cstdint>
-#include <cstring>
+#include <limits>
+#include <map>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -22,36 +23,56 @@ void check(const BezierPatch& S, const char* who) {
                                     " control points for degrees " + std::to_string(S.degree_u) + " x " +
                                     std::to_string(S.degree_v));
 }
-// The column j (P_0j .. P_nj) and row i (P_i0 .. P_im).
-Poly3 column(const BezierPatch& S, int j) {
-    Poly3 c(S.degree_u + 1);
-    for (int i = 0; i <= S.degree_u; ++i) c[i] = S.points[i * (S.degree_v + 1) + j];
-    return c;
-}
-// The curve in v of the columns' values (d = 0) or u-derivatives (d = 1) at u.
+
+// The curve in v whose control points are the columns' values (d = 0), u-derivatives (d = 1) or second
+// u-derivatives (d = 2) at u; column j is P_0j .. P_nj.
 Poly3 v_curve(const BezierPatch& S, double u, int d) {
     Poly3 q(S.degree_v + 1);
-    for (int j = 0; j <= S.degree_v; ++j) q[j] = d == 0 ? de_casteljau(column(S, j), u) : derivative(column(S, j), u);
+    for (int j = 0; j <= S.degree_v; ++j) {
+        Poly3 column(S.degree_u + 1);
+        for (int i = 0; i <= S.degree_u; ++i) column[i] = S.points[i * (S.degree_v + 1) + j];
+        q[j] = d == 0 ? de_casteljau(column, u) : d == 1 ? derivative(column, u) : second_derivative(column, u);
+    }
     return q;
 }
-// The mixed derivative S_uv.
-glm::dvec3 patch_duv(const BezierPatch& S, double u, double v) { return derivative(v_curve(S, u, 1), v); }
 
-// Bernstein values and derivatives of degree n at t (for the tessellator's many evaluations).
-void basis(int n, double t, double* B, double* dB) {
-    // B_k^n by the triangle, dB_k = n (B_(k−1)^(n−1) − B_k^(n−1))
-    double b[32] = {1.0};
-    for (int r = 1; r < n; ++r) {
-        for (int k = r; k >= 1; --k) b[k] = (1 - t) * b[k] + t * b[k - 1];
-        b[0] *= (1 - t);
+// The unit normal at (u, v) from S_u and S_v there, by the contract's rule where S_u × S_v = 0: the direction of
+// d/dδ S_u × S_v moving to (u + σ_u δ, v + σ_v δ) (σ = +1 on the lower half of a parameter, towards the centre),
+// then the normal at the point moved by 1e-6 that way, then (0, 0, 1).
+glm::dvec3 unit_normal(const BezierPatch& S, double u, double v, const glm::dvec3& su, const glm::dvec3& sv) {
+    const glm::dvec3 n = glm::cross(su, sv);
+    const double scale = glm::length(su) + glm::length(sv);
+    if (glm::length(n) > 1e-12 * scale * scale) return glm::normalize(n);
+    const double su_sign = u <= 0.5 ? 1.0 : -1.0, sv_sign = v <= 0.5 ? 1.0 : -1.0;
+    const glm::dvec3 suu = de_casteljau(v_curve(S, u, 2), v), suv = derivative(v_curve(S, u, 1), v),
+                     svv = second_derivative(v_curve(S, u, 0), v);
+    // d/dδ (S_u × S_v) = (σ_u S_uu + σ_v S_uv) × S_v + S_u × (σ_u S_uv + σ_v S_vv)
+    const glm::dvec3 m = glm::cross(su_sign * suu + sv_sign * suv, sv) + glm::cross(su, su_sign * suv + sv_sign * svv);
+    if (glm::length(m) > 0) return glm::normalize(m);
+    const double uu = u + su_sign * 1e-6, vv = v + sv_sign * 1e-6;
+    const glm::dvec3 moved = glm::cross(de_casteljau(v_curve(S, uu, 1), vv), derivative(v_curve(S, uu, 0), vv));
+    if (glm::length(moved) > 0) return glm::normalize(moved);
+    return glm::dvec3(0.0, 0.0, 1.0);  // a patch collapsed to a point
+}
+
+// Bernstein values B[i][k] = B_k^d(i/n) and derivatives dB[i][k] = d (B_(k−1)^(d−1) − B_k^(d−1))(i/n), k = 0..d,
+// i = 0..n, for the tessellator's grid (bernstein is 0 for k − 1 < 0 and k > d − 1).
+struct BasisTable {
+    std::vector<std::vector<double>> B, dB;
+};
+BasisTable basis_table(int d, int n) {
+    BasisTable T;
+    for (int i = 0; i <= n; ++i) {
+        const double t = double(i) / n;
+        std::vector<double> B, dB;
+        for (int k = 0; k <= d; ++k) {
+            B.push_back(bernstein(d, k, t));
+            dB.push_back(d * (bernstein(d - 1, k - 1, t) - bernstein(d - 1, k, t)));
+        }
+        T.B.push_back(B);
+        T.dB.push_back(dB);
     }
-    for (int k = 0; k <= n; ++k) dB[k] = n * ((k > 0 ? b[k - 1] : 0.0) - (k < n ? b[k] : 0.0));
-    double c[32];
-    std::memcpy(c, b, sizeof(double) * n);
-    c[n] = 0.0;
-    for (int k = n; k >= 1; --k) c[k] = (1 - t) * c[k] + t * c[k - 1];
-    c[0] *= (1 - t);
-    std::memcpy(B, c, sizeof(double) * (n + 1));
+    return T;
 }
 // END SOLUTION
 }  // namespace
@@ -80,24 +101,7 @@ glm::dvec3 patch_dv(const BezierPatch& S, double u, double v) {
 glm::dvec3 patch_normal(const BezierPatch& S, double u, double v) {
     // BEGIN SOLUTION
     check(S, "patch_normal");
-    double uu = u, vv = v;
-    for (int attempt = 0; attempt < 12; ++attempt) {
-        const glm::dvec3 su = patch_du(S, uu, vv), sv = patch_dv(S, uu, vv);
-        const glm::dvec3 n = glm::cross(su, sv);
-        const double scale = glm::length(su) + glm::length(sv);
-        if (glm::length(n) > 1e-12 * scale * scale) return glm::normalize(n);
-        // First-order term of S_u × S_v moving into the patch (σ = the direction towards the centre).
-        const glm::dvec3 suv = patch_duv(S, uu, vv);
-        const double su_sign = uu <= 0.5 ? 1.0 : -1.0, sv_sign = vv <= 0.5 ? 1.0 : -1.0;
-        const glm::dvec3 m = su_sign * glm::cross(su, suv) + sv_sign * glm::cross(suv, sv);
-        const double s2 = scale + glm::length(suv);
-        if (glm::length(m) > 1e-12 * s2 * s2) return glm::normalize(m);
-        // Move towards the centre and try again.
-        const double step = 1e-6 * std::pow(10.0, attempt / 2);
-        uu += (uu <= 0.5 ? step : -step);
-        vv += (vv <= 0.5 ? step : -step);
-    }
-    return glm::dvec3(0.0, 0.0, 1.0);  // a patch collapsed to a point or a line: any unit vector
+    return unit_normal(S, u, v, de_casteljau(v_curve(S, u, 1), v), derivative(v_curve(S, u, 0), v));
     // END SOLUTION
 }
 
@@ -105,110 +109,84 @@ PatchMesh tessellate_patches(const std::vector<BezierPatch>& patches, int n, dou
     // BEGIN SOLUTION
     if (n < 1) throw std::invalid_argument("tessellate_patches: n must be >= 1");
     if (!(weld_tol >= 0)) throw std::invalid_argument("tessellate_patches: weld_tol must be >= 0");
-    for (const auto& S : patches) {
-        check(S, "tessellate_patches");
-        if (S.degree_u > 30 || S.degree_v > 30) throw std::invalid_argument("tessellate_patches: degree > 30");
-    }
+    for (const auto& S : patches) check(S, "tessellate_patches");
     PatchMesh mesh;
     auto& soup = mesh.soup;
-    const std::size_t per = std::size_t(n + 1) * std::size_t(n + 1);
-    soup.positions.reserve(patches.size() * per);
-    mesh.normals.reserve(patches.size() * per);
-    soup.indices.reserve(patches.size() * 6 * std::size_t(n) * std::size_t(n));
-    soup.offsets.reserve(patches.size() * 2 * std::size_t(n) * std::size_t(n) + 1);
-    // Border vertices go through a hash grid of cell weld_tol (exact positions when weld_tol = 0).
-    struct Key {
-        std::int64_t x, y, z;
-        bool operator==(const Key&) const = default;
-    };
-    struct KeyHash {
-        std::size_t operator()(const Key& k) const {
-            return std::size_t(k.x * 73856093) ^ std::size_t(k.y * 19349663) ^ std::size_t(k.z * 83492791);
-        }
-    };
-    std::unordered_map<Key, std::vector<std::uint32_t>, KeyHash> grid;
-    const double cell = weld_tol > 0 ? 2 * weld_tol : 0;
-    auto key_of = [&](const glm::dvec3& p) {
-        if (cell == 0) {
-            Key k;
-            std::memcpy(&k.x, &p.x, 8);
-            std::memcpy(&k.y, &p.y, 8);
-            std::memcpy(&k.z, &p.z, 8);
-            return k;
-        }
-        return Key{std::int64_t(std::floor(p.x / cell)), std::int64_t(std::floor(p.y / cell)),
-                   std::int64_t(std::floor(p.z / cell))};
-    };
+    const std::size_t samples = patches.size() * (n + 1) * (n + 1);  // reserve() sizes: capacity only
+    soup.positions.reserve(samples);
+    mesh.normals.reserve(samples);
+    soup.indices.reserve(6 * samples);
+    soup.offsets.reserve(2 * samples);
     auto add_vertex = [&](const glm::dvec3& p, const glm::dvec3& nrm) {
         soup.positions.push_back(p);
         mesh.normals.push_back(flip ? -nrm : nrm);
         return std::uint32_t(soup.positions.size() - 1);
     };
+    // Border vertices by key x + y + z: a border sample becomes the earliest border vertex within weld_tol, or a new
+    // one. Within weld_tol the keys differ by at most √3 weld_tol < 2 weld_tol (the margin absorbs the keys'
+    // rounding); the teapot's seams lie in the planes x = 0 and y = 0, which one coordinate alone would not spread.
+    std::multimap<double, std::uint32_t> border;
+    const std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
     auto weld = [&](const glm::dvec3& p, const glm::dvec3& nrm) {
-        const Key k = key_of(p);
-        if (cell == 0) {
-            auto& list = grid[k];
-            if (!list.empty()) return list.front();
-            list.push_back(add_vertex(p, nrm));
-            return list.front();
-        }
-        for (std::int64_t dx = -1; dx <= 1; ++dx)
-            for (std::int64_t dy = -1; dy <= 1; ++dy)
-                for (std::int64_t dz = -1; dz <= 1; ++dz) {
-                    auto it = grid.find(Key{k.x + dx, k.y + dy, k.z + dz});
-                    if (it == grid.end()) continue;
-                    for (std::uint32_t v : it->second)
-                        if (glm::length(soup.positions[v] - p) <= weld_tol) return v;
-                }
+        const double key = p.x + p.y + p.z;
+        std::uint32_t found = none;
+        for (auto it = border.lower_bound(key - 2 * weld_tol); it != border.end() && it->first <= key + 2 * weld_tol;
+             ++it)
+            if (glm::length(soup.positions[it->second] - p) <= weld_tol) found = std::min(found, it->second);
+        if (found != none) return found;
         const std::uint32_t v = add_vertex(p, nrm);
-        grid[k].push_back(v);
+        border.emplace(key, v);
         return v;
     };
-    std::vector<double> Bu((n + 1) * 31), dBu((n + 1) * 31), Bv((n + 1) * 31), dBv((n + 1) * 31);
-    std::vector<std::uint32_t> id((n + 1) * (n + 1));
+    // A triangle turning like S_u × S_v (reversed when flip); none when two of its vertices are one.
+    auto add_triangle = [&](std::uint32_t x, std::uint32_t y, std::uint32_t z) {
+        if (x == y || y == z || x == z) return;
+        if (flip) soup.add_face({x, z, y});
+        else soup.add_face({x, y, z});
+    };
+    std::map<int, BasisTable> tables;  // by degree: the teapot's 32 patches share one
+    auto table = [&](int d) -> const BasisTable& {
+        auto it = tables.find(d);
+        if (it == tables.end()) it = tables.emplace(d, basis_table(d, n)).first;
+        return it->second;
+    };
+    std::vector<std::uint32_t> id;  // the vertex of sample (i, j) at i (n + 1) + j
+    Poly3 q, qu;
     for (const auto& S : patches) {
         const int du = S.degree_u, dv = S.degree_v;
-        for (int i = 0; i <= n; ++i) {
-            basis(du, double(i) / n, &Bu[i * 31], &dBu[i * 31]);
-            basis(dv, double(i) / n, &Bv[i * 31], &dBv[i * 31]);
-        }
+        const BasisTable &Tu = table(du), &Tv = table(dv);
+        id.clear();
         for (int i = 0; i <= n; ++i) {
             // The v-curves of the columns' values and u-derivatives at u = i/n.
-            glm::dvec3 q[31], qu[31];
+            q.clear();
+            qu.clear();
             for (int j = 0; j <= dv; ++j) {
-                q[j] = qu[j] = glm::dvec3(0.0);
+                glm::dvec3 x(0.0), xu(0.0);
                 for (int a = 0; a <= du; ++a) {
-                    q[j] += Bu[i * 31 + a] * S.points[a * (dv + 1) + j];
-                    qu[j] += dBu[i * 31 + a] * S.points[a * (dv + 1) + j];
+                    x += Tu.B[i][a] * S.points[a * (dv + 1) + j];
+                    xu += Tu.dB[i][a] * S.points[a * (dv + 1) + j];
                 }
+                q.push_back(x);
+                qu.push_back(xu);
             }
             for (int j = 0; j <= n; ++j) {
                 glm::dvec3 p(0.0), su(0.0), sv(0.0);
                 for (int b = 0; b <= dv; ++b) {
-                    p += Bv[j * 31 + b] * q[b];
-                    su += Bv[j * 31 + b] * qu[b];
-                    sv += dBv[j * 31 + b] * q[b];
+                    p += Tv.B[j][b] * q[b];
+                    su += Tv.B[j][b] * qu[b];
+                    sv += Tv.dB[j][b] * q[b];
                 }
-                const glm::dvec3 c = glm::cross(su, sv);
-                const double scale = glm::length(su) + glm::length(sv);
-                const glm::dvec3 nrm = glm::length(c) > 1e-12 * scale * scale
-                                           ? glm::normalize(c)
-                                           : patch_normal(S, double(i) / n, double(j) / n);
-                const bool border = i == 0 || j == 0 || i == n || j == n;
-                id[i * (n + 1) + j] = border ? weld(p, nrm) : add_vertex(p, nrm);
+                const glm::dvec3 nrm = unit_normal(S, double(i) / n, double(j) / n, su, sv);
+                const bool on_border = i == 0 || j == 0 || i == n || j == n;
+                id.push_back(on_border ? weld(p, nrm) : add_vertex(p, nrm));
             }
         }
         for (int i = 0; i < n; ++i)
             for (int j = 0; j < n; ++j) {
                 const std::uint32_t a = id[i * (n + 1) + j], b = id[(i + 1) * (n + 1) + j],
                                     c = id[(i + 1) * (n + 1) + j + 1], d = id[i * (n + 1) + j + 1];
-                auto tri = [&](std::uint32_t x, std::uint32_t y, std::uint32_t z) {
-                    if (x == y || y == z || x == z) return;
-                    if (flip) soup.add_face({x, z, y});
-                    else soup.add_face({x, y, z});
-                };
-                tri(a, b, c);
-                tri(a, c, d);
+                add_triangle(a, b, c);
+                add_triangle(a, c, d);
             }
     }
     return mesh;

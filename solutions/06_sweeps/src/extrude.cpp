@@ -18,13 +18,13 @@ PolygonSoup extrude(const Profile& p, const ExtrudeOptions& o) {
     if (!(o.direction.z > 0))
         throw std::invalid_argument("extrude: direction.z = " + std::to_string(o.direction.z) + " (must be > 0)");
     if (!(o.scale > 0)) throw std::invalid_argument("extrude: scale = " + std::to_string(o.scale) + " (must be > 0)");
-    if (std::abs(o.twist) / o.steps >= std::numbers::pi / 2)
-        throw std::invalid_argument("extrude: twist per step " + std::to_string(std::abs(o.twist) / o.steps) +
+    const double per_step = std::abs(o.twist) / o.steps;
+    if (per_step >= std::numbers::pi / 2)
+        throw std::invalid_argument("extrude: twist per step " + std::to_string(per_step) +
                                     " rad is a quarter turn or more (use more steps)");
     const std::vector<glm::dvec2> pts = profile_points(p);
     const auto n = static_cast<std::uint32_t>(pts.size());
     PolygonSoup m;
-    m.positions.reserve(static_cast<std::size_t>(n) * static_cast<std::size_t>(o.steps + 1));
     for (int k = 0; k <= o.steps; ++k) {
         const double s = static_cast<double>(k) / o.steps;
         const double sc = 1 + s * (o.scale - 1), c = std::cos(s * o.twist), si = std::sin(s * o.twist);

@@ -20,10 +20,6 @@ void check_path(const Path& path, const char* fn) {
         throw std::invalid_argument(std::string(fn) + ": " + std::to_string(path.points.size()) + " points but " +
                                     std::to_string(path.tangents.size()) + " tangents");
 }
-// v turned about the unit axis a by angle t (Rodrigues).
-glm::dvec3 turn(const glm::dvec3& v, const glm::dvec3& a, double t) {
-    return v * std::cos(t) + glm::cross(a, v) * std::sin(t) + a * glm::dot(a, v) * (1 - std::cos(t));
-}
 // END SOLUTION
 }  // namespace
 
@@ -71,7 +67,7 @@ RmfResult rotation_minimizing_frames(const Path& path, const glm::dvec3& initial
         const glm::dvec3 tL = t - (2 / c1) * glm::dot(v1, t) * v1;
         const glm::dvec3 v2 = t1 - tL;
         const double c2 = glm::dot(v2, v2);
-        return c2 == 0 ? rL : rL - (2 / c2) * glm::dot(v2, rL) * v2;
+        return c2 > 0 ? rL - (2 / c2) * glm::dot(v2, rL) * v2 : rL;  // v₂ = 0: no second reflection
     };
     RmfResult res;
     res.frames.resize(n);
@@ -83,18 +79,18 @@ RmfResult rotation_minimizing_frames(const Path& path, const glm::dvec3& initial
         }
         res.frames[i] = {T[i], r, glm::cross(T[i], r)};
     }
-    if (path.closed && n >= 2) {
-        glm::dvec3 rn = step(n - 1, X[n - 1], T[n - 1], r, X[0], T[0]);
-        rn = glm::normalize(rn - glm::dot(rn, T[0]) * T[0]);
-        const Frame& f0 = res.frames[0];
-        res.mismatch = std::atan2(glm::dot(rn, f0.B), glm::dot(rn, f0.N));
-        double L = 0;
-        std::vector<double> s(n, 0.0);
-        for (std::size_t i = 1; i < n; ++i) s[i] = s[i - 1] + glm::length(X[i] - X[i - 1]);
-        L = s[n - 1] + glm::length(X[0] - X[n - 1]);
+    if (path.closed) {
+        // Carried once around (the step back to sample 0), the normal comes back turned by the mismatch about T₀.
+        const glm::dvec3 back = step(n - 1, X[n - 1], T[n - 1], r, X[0], T[0]);
+        res.mismatch = std::atan2(glm::dot(back, res.frames[0].B), glm::dot(back, res.frames[0].N));
+        double L = glm::length(X[0] - X[n - 1]);  // the loop's length
+        for (std::size_t i = 1; i < n; ++i) L += glm::length(X[i] - X[i - 1]);
+        double s = 0;  // the length from sample 0 to sample i
         for (std::size_t i = 1; i < n; ++i) {
+            s += glm::length(X[i] - X[i - 1]);
             Frame& f = res.frames[i];
-            f.N = turn(f.N, f.T, -res.mismatch * s[i] / L);
+            const double t = -res.mismatch * s / L;  // N turned by t about T (N ⟂ T, B = T × N)
+            f.N = std::cos(t) * f.N + std::sin(t) * f.B;
             f.B = glm::cross(f.T, f.N);
         }
     }

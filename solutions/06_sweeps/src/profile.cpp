@@ -14,8 +14,7 @@ namespace geolab::sweeps {
 double signed_area(const Loop& loop) {
     // BEGIN SOLUTION
     const std::size_t n = loop.size();
-    if (n < 3) return 0.0;
-    double s = 0;
+    double s = 0;  // fewer than 3 points: the terms cancel exactly, s = 0
     for (std::size_t i = 0; i < n; ++i) {
         const glm::dvec2& a = loop[i];
         const glm::dvec2& b = loop[(i + 1) % n];
@@ -33,12 +32,12 @@ bool on_segment(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c) {
     return std::min(a.x, b.x) <= c.x && c.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= c.y &&
            c.y <= std::max(a.y, b.y);
 }
-// Whether the closed segments [a, b] and [c, d] have a point in common (exact).
+// Whether the closed segments [a, b] and [c, d] have a point in common (exact): on one line, when their extents
+// overlap; else when neither segment lies strictly on one side of the other's line.
 bool segments_meet(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c, const glm::dvec2& d) {
-    const int o1 = orient2d(a, b, c), o2 = orient2d(a, b, d), o3 = orient2d(c, d, a), o4 = orient2d(c, d, b);
-    if (o1 * o2 < 0 && o3 * o4 < 0) return true;
-    return (o1 == 0 && on_segment(a, b, c)) || (o2 == 0 && on_segment(a, b, d)) || (o3 == 0 && on_segment(c, d, a)) ||
-           (o4 == 0 && on_segment(c, d, b));
+    const int o1 = orient2d(a, b, c), o2 = orient2d(a, b, d);
+    if (o1 == 0 && o2 == 0) return on_segment(a, b, c) || on_segment(a, b, d) || on_segment(c, d, a) || on_segment(c, d, b);
+    return o1 * o2 <= 0 && orient2d(c, d, a) * orient2d(c, d, b) <= 0;
 }
 // Crossing-number test; p must not lie on the loop.
 bool inside(const Loop& loop, const glm::dvec2& p) {
@@ -66,25 +65,19 @@ void check_loop(const Loop& l, int k) {
             throw std::invalid_argument(name + ": vertices " + std::to_string(i) + " and " +
                                         std::to_string((i + 1) % n) + " are equal");
     }
-    for (std::size_t i = 0; i < n; ++i) {
-        const glm::dvec2 &a = l[i], &b = l[(i + 1) % n], &c = l[(i + 2) % n];
-        if (orient2d(a, b, c) == 0 && glm::dot(b - a, c - b) < 0)
-            throw std::invalid_argument(name + " intersects itself: it folds back at vertex " +
-                                        std::to_string((i + 1) % n));
+    // Every two edges that are not neighbours (an edge that folds back onto its neighbour meets another edge too).
+    for (std::size_t i = 0; i < n; ++i)
         for (std::size_t j = i + 2; j < n; ++j) {
-            if (i == 0 && j == n - 1) continue;  // adjacent through the wrap
-            if (segments_meet(a, b, l[j], l[(j + 1) % n]))
+            if (i == 0 && j == n - 1) continue;  // neighbours through the wrap
+            if (segments_meet(l[i], l[(i + 1) % n], l[j], l[(j + 1) % n]))
                 throw std::invalid_argument(name + " intersects itself: edges " + std::to_string(i) + " and " +
                                             std::to_string(j) + " meet");
         }
-    }
     const double area = signed_area(l);
     if (area == 0) throw std::invalid_argument(name + " has zero area");
     if ((k < 0) != (area > 0))
-        throw std::invalid_argument(name + " has the wrong orientation (" +
-                                    (k < 0 ? std::string("the outer loop must be counter-clockwise")
-                                           : std::string("a hole must be clockwise")) +
-                                    "; signed area " + std::to_string(area) + ")");
+        throw std::invalid_argument(name + " has the wrong orientation (signed area " + std::to_string(area) +
+                                    "; the outer loop must be counter-clockwise, a hole clockwise)");
 }
 bool loops_meet(const Loop& p, const Loop& q) {
     for (std::size_t i = 0; i < p.size(); ++i)

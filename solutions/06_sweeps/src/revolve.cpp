@@ -24,11 +24,11 @@ Profile clip_to_axis(const Profile& p) {
         if (ain != bin) out.push_back({0.0, a.y + (b.y - a.y) * (0.0 - a.x) / (b.x - a.x)});
         if (bin) out.push_back(b);
     }
-    Loop clean;
+    Loop clean;  // without repeated points (a point on the axis and the crossing point there)
     for (const glm::dvec2& q : out)
         if (clean.empty() || clean.back() != q) clean.push_back(q);
-    while (clean.size() > 1 && clean.front() == clean.back()) clean.pop_back();
-    if (clean.size() < 3 || signed_area(clean) <= 0)
+    if (!clean.empty() && clean.front() == clean.back()) clean.pop_back();
+    if (signed_area(clean) <= 0)  // also fewer than 3 points: area 0
         throw std::invalid_argument("clip_to_axis: nothing of the profile lies at x >= 0");
     return {clean, p.holes};
     // END SOLUTION
@@ -39,9 +39,9 @@ PolygonSoup revolve(const Profile& p, const RevolveOptions& o) {
     if (o.segments < 3)
         throw std::invalid_argument("revolve: segments = " + std::to_string(o.segments) + " (at least 3)");
     const double two_pi = 2 * std::numbers::pi;
-    if (!(o.angle > 0) || o.angle > two_pi + 1e-12)
-        throw std::invalid_argument("revolve: angle = " + std::to_string(o.angle) + " (must be in (0, 2π])");
     const bool full = std::abs(o.angle - two_pi) <= 1e-12;
+    if (!full && !(o.angle > 0 && o.angle < two_pi))
+        throw std::invalid_argument("revolve: angle = " + std::to_string(o.angle) + " (must be in (0, 2π])");
     const Profile c = clip_to_axis(p);
     const std::vector<glm::dvec2> pts = profile_points(c);
     const auto segs = static_cast<std::uint32_t>(o.segments);
@@ -64,8 +64,7 @@ PolygonSoup revolve(const Profile& p, const RevolveOptions& o) {
     auto strips = [&](std::size_t len) {
         for (std::size_t k = 0; k < len; ++k) {
             const std::size_t a = start + k, b = start + (k + 1) % len;
-            const bool pa = pts[a].x == 0, pb = pts[b].x == 0;
-            if (pa && pb) continue;  // on the axis: no surface
+            const bool pa = pts[a].x == 0, pb = pts[b].x == 0;  // both: an edge on the axis, no surface
             for (std::uint32_t j = 0; j < segs; ++j) {
                 if (!pa) m.add_face({vert(a, j), vert(a, j + 1), vert(b, j + 1)});
                 if (!pb) m.add_face({vert(a, j), vert(b, j + 1), vert(b, j)});

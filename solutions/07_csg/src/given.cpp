@@ -183,33 +183,70 @@ Box leaf_box(const Node& d) {
     }
     return b;
 }
-Box node_box(const Tree& t, int i) {
-    const Node& d = t.nodes[i];
+// The box of an operation from its operands' boxes.
+Box op_box(const Node& d, const Box& a, const Box& b) {
     switch (d.op) {
-        case Op::leaf: return leaf_box(d);
-        case Op::unite: return hull(node_box(t, d.a), node_box(t, d.b));
+        case Op::unite: return hull(a, b);
         case Op::intersect: {
-            const Box a = node_box(t, d.a), b = node_box(t, d.b);
             Box r{glm::max(a.lo, b.lo), glm::min(a.hi, b.hi)};
             for (int k = 0; k < 3; ++k)
                 if (r.lo[k] > r.hi[k]) r.lo[k] = r.hi[k] = 0.5 * (r.lo[k] + r.hi[k]);
             return r;
         }
-        case Op::subtract: return node_box(t, d.a);
+        case Op::subtract: return a;
         case Op::blend: {
-            Box r = hull(node_box(t, d.a), node_box(t, d.b));
+            Box r = hull(a, b);
             r.lo -= glm::dvec3(d.k / 4);
             r.hi += glm::dvec3(d.k / 4);
             return r;
         }
+        case Op::leaf: break;
     }
     return {};
+}
+// Every node's box, children before parents (check_tree done).
+std::vector<Box> node_boxes(const Tree& t) {
+    std::vector<Box> box(t.nodes.size());
+    for (std::size_t i = 0; i < t.nodes.size(); ++i) {
+        const Node& d = t.nodes[i];
+        box[i] = d.op == Op::leaf ? leaf_box(d) : op_box(d, box[d.a], box[d.b]);
+    }
+    return box;
 }
 }  // namespace
 
 Box bounds(const Tree& t) {
     check_tree(t);
-    return node_box(t, t.root);
+    return node_boxes(t)[t.root];
+}
+
+PreparedTree prepare(const Tree& t) {
+    check_tree(t);
+    const std::vector<Box> box = node_boxes(t);
+    PreparedTree p;
+    p.root = t.root;
+    p.nodes.resize(t.nodes.size());
+    for (std::size_t i = 0; i < t.nodes.size(); ++i) {
+        PreparedNode& q = p.nodes[i];
+        q.node = t.nodes[i];
+        if (q.node.op == Op::leaf) {
+            q.inverse = affine_inverse(q.node.M);
+            q.normal_map = glm::transpose(glm::dmat3(q.inverse));
+            q.stretch = min_stretch(q.node.M);
+        }
+        p.has_blend = p.has_blend || q.node.op == Op::blend;
+        // grow the box by 1e-9 of its extent and position (rounding in leaf_box, M⁻¹ and the slab test is far less)
+        for (int k = 0; k < 3; ++k) {
+            const double lo = box[i].lo[k], hi = box[i].hi[k];
+            double scale = 0;
+            if (std::isfinite(lo)) scale = std::abs(lo);
+            if (std::isfinite(hi)) scale = std::max(scale, std::abs(hi));
+            if (std::isfinite(hi - lo)) scale += hi - lo;
+            q.lo[k] = lo - 1e-9 * scale;
+            q.hi[k] = hi + 1e-9 * scale;
+        }
+    }
+    return p;
 }
 
 double scene_size(const Tree& t) {
@@ -337,22 +374,40 @@ Tree from_scad(const scad::Scene& s) {
                               : n.kind == scad::Kind::intersection ? Op::intersect
                                                                     : Op::subtract;
                 if (n.children.empty()) throw std::invalid_argument("from_scad: a boolean without children");
-                int acc = -1;
+                std::vector<int> kids;
                 for (int c : n.children) {
                     if (c < 0 || std::size_t(c) >= i || at[c] < 0)
                         throw std::invalid_argument("from_scad: node " + std::to_string(i) + " has a bad child");
-                    if (acc < 0) {
-                        acc = at[c];
-                        continue;
-                    }
-                    Node d;
-                    d.op = op;
-                    d.a = acc;
-                    d.b = at[c];
-                    t.nodes.push_back(d);
-                    acc = int(t.nodes.size()) - 1;
+                    kids.push_back(at[c]);
                 }
-                at[i] = acc;
+                // Balanced, not a chain: a union of 100,000 spheres made a tree 100,000 deep, and the recursive
+                // walks (bounds, hits) overflowed the stack. a − b − c − ... = a − (b ∪ c ∪ ...).
+                auto combine = [&](Op o, std::vector<int> list) {
+                    while (list.size() > 1) {
+                        std::vector<int> next;
+                        for (std::size_t k = 0; k + 1 < list.size(); k += 2) {
+                            Node d;
+                            d.op = o;
+                            d.a = list[k];
+                            d.b = list[k + 1];
+                            t.nodes.push_back(d);
+                            next.push_back(int(t.nodes.size()) - 1);
+                        }
+                        if (list.size() % 2 == 1) next.push_back(list.back());
+                        list = std::move(next);
+                    }
+                    return list[0];
+                };
+                if (op != Op::subtract || kids.size() == 1) {
+                    at[i] = combine(op, kids);
+                } else {
+                    Node d;
+                    d.op = Op::subtract;
+                    d.a = kids[0];
+                    d.b = combine(Op::unite, std::vector<int>(kids.begin() + 1, kids.end()));
+                    t.nodes.push_back(d);
+                    at[i] = int(t.nodes.size()) - 1;
+                }
             }
         }
     }

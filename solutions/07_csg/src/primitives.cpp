@@ -44,11 +44,14 @@ double primitive_distance(const Node& leaf, const glm::dvec3& p) {
             return glm::length(glm::max(q, 0.0)) + std::min(std::max({q.x, q.y, q.z}), 0.0);
         }
         case Shape::cylinder: {
-            const glm::dvec2 q(std::hypot(p.x, p.y) - s.x, std::abs(p.z) - s.z);
+            const glm::dvec2 q(std::sqrt(p.x * p.x + p.y * p.y) - s.x, std::abs(p.z) - s.z);
             return glm::length(glm::max(q, 0.0)) + std::min(std::max(q.x, q.y), 0.0);
         }
-        case Shape::cone: return trapezoid_distance(std::hypot(p.x, p.y), p.z, s.x, s.y, s.z);
-        case Shape::torus: return std::hypot(std::hypot(p.x, p.y) - s.x, p.z) - s.y;
+        case Shape::cone: return trapezoid_distance(std::sqrt(p.x * p.x + p.y * p.y), p.z, s.x, s.y, s.z);
+        case Shape::torus: {
+            const double a = std::sqrt(p.x * p.x + p.y * p.y) - s.x;
+            return std::sqrt(a * a + p.z * p.z) - s.y;
+        }
         case Shape::halfspace: return p.z;
         case Shape::quadric: {
             const double q = Quadric{leaf.Q}.value(p);

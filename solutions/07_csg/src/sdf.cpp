@@ -18,13 +18,11 @@ double smooth_min(double a, double b, double k) {
 // BEGIN SOLUTION
 // STUB: // Helper functions of your own can go here.
 namespace {
-double node_sdf(const Tree& t, int i, const glm::dvec3& x) {
-    const Node& d = t.nodes[i];
+double node_sdf(const PreparedTree& t, int i, const glm::dvec3& x) {
+    const PreparedNode& p = t.nodes[i];
+    const Node& d = p.node;
     switch (d.op) {
-        case Op::leaf: {
-            const glm::dvec3 p = glm::dvec3(affine_inverse(d.M) * glm::dvec4(x, 1.0));
-            return min_stretch(d.M) * primitive_distance(d, p);
-        }
+        case Op::leaf: return p.stretch * primitive_distance(d, glm::dvec3(p.inverse * glm::dvec4(x, 1.0)));
         case Op::unite: return std::min(node_sdf(t, d.a, x), node_sdf(t, d.b, x));
         case Op::intersect: return std::max(node_sdf(t, d.a, x), node_sdf(t, d.b, x));
         case Op::subtract: return std::max(node_sdf(t, d.a, x), -node_sdf(t, d.b, x));
@@ -35,10 +33,15 @@ double node_sdf(const Tree& t, int i, const glm::dvec3& x) {
 }  // namespace
 // END SOLUTION
 
+double sdf(const PreparedTree& t, const glm::dvec3& x) {
+    // BEGIN SOLUTION
+    return node_sdf(t, t.root, x);
+    // END SOLUTION
+}
+
 double sdf(const Tree& t, const glm::dvec3& x) {
     // BEGIN SOLUTION
-    check_tree(t);
-    return node_sdf(t, t.root, x);
+    return sdf(prepare(t), x);
     // END SOLUTION
 }
 

@@ -44,10 +44,10 @@ void clip_slab(Span& s, double o, double d, double lo, double hi, const glm::dve
     }
 }
 
-// The spans where α t² + β t + γ ≤ 0 (touching roots give nothing); normals from `grad` at the finite ends.
+// Appends to out the spans where α t² + β t + γ ≤ 0 (touching roots give nothing); normals from `grad` at the
+// finite ends.
 template <class Grad>
-std::vector<Span> quadratic_spans(double al, double be, double ga, const Ray& r, Grad grad) {
-    std::vector<Span> out;
+void quadratic_spans(double al, double be, double ga, const Ray& r, Grad grad, std::vector<Span>& out) {
     auto normal = [&](double t) { return unit_or_zero(grad(r.origin + t * r.direction)); };
     auto span = [&](double t0, double t1) {
         Span s;
@@ -65,31 +65,30 @@ std::vector<Span> quadratic_spans(double al, double be, double ga, const Ray& r,
         } else {
             span(-ga / be, inf);
         }
-        return out;
+        return;
     }
     const double disc = be * be - 4 * al * ga;
     if (!(disc > 0)) {
         if (al < 0) span(-inf, inf);
-        return out;
+        return;
     }
-    const double q = -0.5 * (be + std::copysign(std::sqrt(disc), be));
-    double t0 = q / al, t1 = q != 0 ? ga / q : -t0;
+    const double q = -0.5 * (be + std::copysign(std::sqrt(disc), be));  // never 0: Δ > 0
+    double t0 = q / al, t1 = ga / q;
     if (t0 > t1) std::swap(t0, t1);
     if (al > 0) {
-        if (t0 < t1) span(t0, t1);
+        span(t0, t1);
     } else {
         span(-inf, t0);
         span(t1, inf);
     }
-    return out;
 }
 
-std::vector<Span> keep_positive(std::vector<Span> v) {
+// Removes the spans that clipping left empty (t0 ≥ t1).
+void keep_positive(std::vector<Span>& v) {
     std::erase_if(v, [](const Span& s) { return !(s.t0 < s.t1); });
-    return v;
 }
 
-std::vector<Span> torus_spans(const Node& leaf, const Ray& r) {
+void torus_spans(const Node& leaf, const Ray& r, std::vector<Span>& out) {
     const double R = leaf.size.x, rr = leaf.size.y;
     // Well-conditioned quartic: from the point of the line nearest the centre, along the unit direction u, in
     // s = (t − t_c)·|d| (a far origin or a very long or short direction would otherwise lose the roots).
@@ -99,15 +98,14 @@ std::vector<Span> torus_spans(const Node& leaf, const Ray& r) {
     const glm::dvec3 o = r.origin + t_c * r.direction;
     const double bound = 1.01 * (R + rr);
     const double oo = glm::dot(o, o);
-    if (oo >= bound * bound) return {};
+    if (oo >= bound * bound) return;
     const double hi = std::sqrt(bound * bound - oo), lo = -hi;
     // |p|² = s² + |o|² (o ⟂ u), so (|p|² + R² − r²)² − 4R²(x² + y²) = (s² + C)² − 4R²(ρ-terms) with no odd |p|² terms
     const double C = oo + R * R - rr * rr;
     const double dxy = u.x * u.x + u.y * u.y, odxy = o.x * u.x + o.y * u.y, oxy = o.x * o.x + o.y * o.y;
     const std::vector<double> c = {C * C - 4 * R * R * oxy, -8 * R * R * odxy, 2 * C - 4 * R * R * dxy, 0.0, 1.0};
-    std::vector<double> cuts{lo};
-    for (double s : real_roots(c, lo, hi)) cuts.push_back(s);
-    cuts.push_back(hi);
+    std::vector<double> ends = real_roots(c, lo, hi);
+    ends.push_back(hi);
     auto inside = [&](double s) {
         const glm::dvec3 p = o + s * u;
         return std::hypot(std::hypot(p.x, p.y) - R, p.z) < rr;
@@ -119,38 +117,43 @@ std::vector<Span> torus_spans(const Node& leaf, const Ray& r) {
         const glm::dvec3 c = rho > 0 ? glm::dvec3(R * p.x / rho, R * p.y / rho, 0.0) : glm::dvec3(R, 0, 0);
         return unit_or_zero(p - c);
     };
-    std::vector<Span> out;
-    for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
-        const double a = cuts[i], b = cuts[i + 1];
-        if (!(a < b) || !inside(0.5 * (a + b))) continue;
-        if (!out.empty() && out.back().t1 == t_c + a / L) {  // a touching root inside: one span
-            out.back().t1 = t_c + b / L;
+    // The pieces between lo, the roots and hi: inside or outside throughout, read off their midpoints.
+    double a = lo;
+    for (const double b : ends) {
+        const double s0 = std::exchange(a, b);  // the piece [s0, b]
+        if (!(s0 < b) || !inside(0.5 * (s0 + b))) continue;
+        const double t0 = t_c + s0 / L, t1 = t_c + b / L;
+        if (!out.empty() && out.back().t1 == t0) {  // a touching root inside: one span
+            out.back().t1 = t1;
             out.back().n1 = grad(b);
             continue;
         }
-        out.push_back(Span{t_c + a / L, t_c + b / L, grad(a), grad(b)});
+        out.push_back(Span{t0, t1, grad(s0), grad(b)});
     }
-    return out;
 }
 }  // namespace
 // END SOLUTION
 
-std::vector<Span> primitive_spans(const Node& leaf, const Ray& r) {
+void primitive_spans(const Node& leaf, const Ray& r, std::vector<Span>& out) {
     // BEGIN SOLUTION
     if (leaf.op != Op::leaf) throw std::invalid_argument("primitive_spans: the node is not a leaf");
     const glm::dvec3 o = r.origin, d = r.direction;
     if (d == glm::dvec3(0.0)) throw std::invalid_argument("primitive_spans: zero direction");
+    out.clear();
     const glm::dvec3 s = leaf.size;
     switch (leaf.shape) {
         case Shape::sphere:
-            return keep_positive(quadratic_spans(glm::dot(d, d), 2 * glm::dot(o, d), glm::dot(o, o) - s.x * s.x, r,
-                                                 [](glm::dvec3 p) { return p; }));
+            quadratic_spans(glm::dot(d, d), 2 * glm::dot(o, d), glm::dot(o, o) - s.x * s.x, r,
+                            [](glm::dvec3 p) { return p; }, out);
+            keep_positive(out);
+            return;
         case Shape::box: {
             Span sp{-inf, inf, glm::dvec3(0), glm::dvec3(0)};
             clip_slab(sp, o.x, d.x, -s.x, s.x, {1, 0, 0});
             clip_slab(sp, o.y, d.y, -s.y, s.y, {0, 1, 0});
             clip_slab(sp, o.z, d.z, -s.z, s.z, {0, 0, 1});
-            return keep_positive({sp});
+            if (sp.t0 < sp.t1) out.push_back(sp);
+            return;
         }
         case Shape::cylinder:
         case Shape::cone: {
@@ -162,16 +165,19 @@ std::vector<Span> primitive_spans(const Node& leaf, const Ray& r) {
             const double al = d.x * d.x + d.y * d.y - a * a * d.z * d.z;
             const double be = 2 * (o.x * d.x + o.y * d.y - a * d.z * rz);
             const double ga = o.x * o.x + o.y * o.y - rz * rz;
-            auto spans = quadratic_spans(al, be, ga, r, [a, b](glm::dvec3 p) {
-                return glm::dvec3(p.x, p.y, -a * (a * p.z + b));
-            });
-            for (Span& sp : spans) clip_slab(sp, o.z, d.z, -h, h, {0, 0, 1});
-            return keep_positive(spans);
+            quadratic_spans(al, be, ga, r, [a, b](glm::dvec3 p) { return glm::dvec3(p.x, p.y, -a * (a * p.z + b)); },
+                            out);
+            for (Span& sp : out) clip_slab(sp, o.z, d.z, -h, h, {0, 0, 1});
+            keep_positive(out);
+            return;
         }
-        case Shape::torus: return torus_spans(leaf, r);
+        case Shape::torus: torus_spans(leaf, r, out); return;
         case Shape::halfspace: {
             Span sp{-inf, inf, glm::dvec3(0), glm::dvec3(0)};
-            if (d.z == 0) return o.z < 0 ? std::vector<Span>{sp} : std::vector<Span>{};
+            if (d.z == 0) {
+                if (o.z < 0) out.push_back(sp);
+                return;
+            }
             const double t = -o.z / d.z;
             if (d.z > 0) {
                 sp.t1 = t;
@@ -180,14 +186,17 @@ std::vector<Span> primitive_spans(const Node& leaf, const Ray& r) {
                 sp.t0 = t;
                 sp.n0 = {0, 0, 1};
             }
-            return {sp};
+            out.push_back(sp);
+            return;
         }
         case Shape::quadric: {
             const glm::dmat4& Q = leaf.Q;
             const glm::dvec4 X(o, 1.0), D(d, 0.0);
             const glm::dvec4 QX = Q * X, QD = Q * D;
-            return keep_positive(quadratic_spans(glm::dot(D, QD), 2 * glm::dot(X, QD), glm::dot(X, QX), r,
-                                                 [&Q](glm::dvec3 p) { return glm::dvec3(Q * glm::dvec4(p, 1.0)); }));
+            quadratic_spans(glm::dot(D, QD), 2 * glm::dot(X, QD), glm::dot(X, QX), r,
+                            [&Q](glm::dvec3 p) { return glm::dvec3(Q * glm::dvec4(p, 1.0)); }, out);
+            keep_positive(out);
+            return;
         }
     }
     throw std::invalid_argument("primitive_spans: unknown shape");

@@ -143,7 +143,9 @@ Binvox decode_binvox(const std::string& bytes, const std::string& name) {
     const std::uint64_t pairs = (bytes.size() - pos) / 2;
     const long double voxels = static_cast<long double>(n) * n * n;
     if (voxels > 255.0L * static_cast<long double>(pairs))
-        throw IoError(name, 0, "dim " + std::to_string(n) + " needs " + std::to_string(std::uint64_t(voxels)) +
+        throw IoError(name, 0, "dim " + std::to_string(n) + " needs " +
+                                   // n³ may not fit in 64 bits: converting it would be undefined
+                                   (voxels < 1e19L ? std::to_string(std::uint64_t(voxels)) : std::to_string(n) + "³") +
                                    " voxels, more than the " + std::to_string(pairs) + " run-length pairs can hold");
     out.grid = BitGrid(Dims{n, n, n});
     const std::uint64_t total = std::uint64_t(n) * std::uint64_t(n) * std::uint64_t(n), nn = std::uint64_t(n);

@@ -11,6 +11,7 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "geolab/io.hpp"
 #include "geolab/voxels.hpp"
 
 namespace geolab::voxels {
@@ -76,14 +77,8 @@ void write_binvox(const std::filesystem::path& path, const Binvox& file) {
 }
 
 Binvox read_binvox(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw IoError(path.string(), 0, "cannot open");
-    constexpr std::uintmax_t max_bytes = (std::uintmax_t(64) << 20) + 4096;
-    std::error_code ec;
-    const std::uintmax_t size = std::filesystem::file_size(path, ec);
-    if (!ec && size > max_bytes) throw IoError(path.string(), 0, "larger than 64 MiB: not read");
-    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (in.bad()) throw IoError(path.string(), 0, "read failed");
+    // lib's read_text_file: a FIFO (it blocked forever), /dev/zero (it grew without bound) or a directory is refused
+    const std::string bytes = read_text_file(path, ReadOptions{.max_file_bytes = (std::uint64_t(64) << 20) + 4096});
     return decode_binvox(bytes, path.string());
 }
 

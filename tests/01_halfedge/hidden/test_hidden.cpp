@@ -180,7 +180,7 @@ TEST_SUITE("Task 1: build the mesh") {
             const double a = 3.0 * i / n;  // an open fan: three radians of a unit circle
             fan.positions.push_back({std::cos(a), std::sin(a), 0.0});
         }
-        for (int i = 1; i <= n; ++i) fan.add_face({0, i, i + 1});
+        for (std::uint32_t i = 1; i <= std::uint32_t(n); ++i) fan.add_face({0, i, i + 1});
         Mesh f;
         const double fan_seconds = geolab::time_student_call([&] { f = build_mesh(fan); });
         INFO("fan of " << n << " triangles: build_mesh took " << fan_seconds

@@ -181,6 +181,28 @@ TEST_SUITE("Task 4: smoothing") {
         // edges' asymmetry: compare with generous tolerance and check the tets stay positive
         CHECK_MESSAGE(worst < 0.05, "after 400 iterations the vertices should be near the regular grid; largest distance " << worst);
         CHECK_MESSAGE(v > 0, "inverted tets after smoothing: minimum volume " << v);
+        // a tet hanging at the centre of tet grid 2 by that vertex alone, then deleted: its 3 edges at the centre
+        // are deleted (no face left), the centre stays interior and only its 14 alive edges count
+        CellList cl = fx::tet_grid(2, 0.0);
+        const std::uint32_t centre = fx::grid_index(2, 1, 1, 1), first = std::uint32_t(cl.positions.size());
+        for (const auto& p : {glm::dvec3(3, 0, 0), glm::dvec3(3, 1, 0), glm::dvec3(3, 0, 1)}) cl.positions.push_back(p);
+        cl.add_tet(centre, first, first + 1, first + 2);
+        Mesh hang = hidden_build(cl);
+        kernel_delete_cell(hang, Cell{std::uint32_t(cl.n_cells() - 1)});
+        glm::dvec3 sum(0);
+        int d = 0;
+        for (Edge e : hang.edges()) {
+            const auto ev = hang.edge_vertices(e);
+            if (!hang.is_deleted(e) && (ev[0].idx == centre || ev[1].idx == centre))
+                sum += hang.position(ev[0].idx == centre ? ev[1] : ev[0]), ++d;
+        }
+        const glm::dvec3 p0 = hang.position(Vertex{centre}), expected = p0 + 0.5 * (sum / double(d) - p0);
+        (void)volume_smoothing(hang, 0.5, 1);
+        const glm::dvec3 got = hang.position(Vertex{centre});
+        CHECK_MESSAGE(glm::length(got - expected) < 1e-12, "tet grid 2 with a deleted tet hanging at its centre: the centre "
+                                                           "should move to (" << expected.x << ", " << expected.y << ", "
+                                                           << expected.z << ") (" << d << " alive edges), got (" << got.x
+                                                           << ", " << got.y << ", " << got.z << ")");
     }
 }
 

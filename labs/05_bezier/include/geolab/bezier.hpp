@@ -97,13 +97,19 @@ double signed_curvature(const Poly2& P, double t);
 // ==== Task 3: measures (handout §4) ===========================================================================
 
 //! The length of C on [a, b] (a ≤ b, both in [0, 1]) by Gauss–Legendre quadrature of |C'| mapped to [a, b],
-//! adaptive: an interval whose 5- and 10-point rules differ by more than its share of tol (tol · its length / the
-//! whole length) is halved (to a depth of 50). The result is within tol of the true length (tol > 0 absolute).
-//! \throw std::invalid_argument when P is empty, tol ≤ 0, or not 0 ≤ a ≤ b ≤ 1.
+//! adaptive, in pieces. [a, b] is first cut where the speed |C'| is stationary: the roots in (a, b) of C' · C''
+//! (degree 2n − 3), to within 1e-12 — a cusp is one, and two rules cannot see a kink near an interval's end. On
+//! each piece an interval whose 5- and 10-point values differ by more than its share of T, T · its length / (b − a),
+//! is halved; T = max(tol, 1e-14 · (b − a) · max_k |n ΔP_k|) (|C'| is known to about 1e-16 of its largest
+//! control point, so a tol below that acts as that); an interval too small to halve in double is kept. The result
+//! is the sum of the kept intervals' 10-point values: within tol of the true length (tol > 0 absolute).
+//! \throw std::invalid_argument when P is empty, tol ≤ 0, not 0 ≤ a ≤ b ≤ 1, or |C'| overflows (a hodograph point
+//!        whose length is not finite: a control point too large or not finite).
 double arc_length(const Poly3& P, double a, double b, double tol);
 
-//! The parameter t with arc_length(P, 0, t) = s for 0 ≤ s ≤ the curve's length (Newton on the length with a
-//! bisection fallback), |length(0, t) − s| ≤ tol. A curve with C' = 0 on a stretch returns any t of it.
+//! The parameter t with arc_length(P, 0, t) = s for 0 ≤ s ≤ the curve's length (e.g. bisection on the length,
+//! or Newton kept inside a bisection bracket): |length(0, t) − s| ≤ tol, or, when tol is below what the lengths
+//! resolve, t within one double of the answer. A curve with C' = 0 on a stretch returns any t of it.
 //! \throw std::invalid_argument when s < 0 or s > length + tol, or as arc_length.
 double parameter_at_length(const Poly3& P, double s, double tol);
 
@@ -125,9 +131,10 @@ struct Closest {
     double distance = 0;
     GEOLAB_FIELDS(t, point, distance)
 };
-//! The global nearest point (not a local one): e.g. sample or subdivide to bracket candidates, refine each by
-//! Newton on (C(t) − q) · C'(t) = 0 clamped to [0, 1], compare with the ends. Distance within 1e-9 · (scale)
-//! of the true minimum, scale = control points' box diagonal + |q|. \throw std::invalid_argument when P is empty.
+//! The global nearest point (not a local one): an end, or a root in (0, 1) of (C(t) − q) · C'(t) (e.g. isolate the
+//! roots of that Bernstein polynomial of degree 2n − 1 by subdivision, or sample and refine by Newton); compare
+//! them all. Distance within 1e-9 · (scale) of the true minimum, scale = control points' box diagonal + |q|; of
+//! points exactly equally near, the one with the smallest t. \throw std::invalid_argument when P is empty.
 Closest closest_point(const Poly3& P, const glm::dvec3& q);
 
 // ==== Task 4: composite curves (handout §5) ===================================================================
@@ -168,11 +175,13 @@ glm::dvec3 patch_point(const BezierPatch& S, double u, double v);
 glm::dvec3 patch_du(const BezierPatch& S, double u, double v);
 glm::dvec3 patch_dv(const BezierPatch& S, double u, double v);
 
-//! The unit normal along S_u × S_v at (u, v). Where S_u × S_v = 0 (|S_u × S_v| ≤ 1e-12 · (|S_u| + |S_v|)², a
-//! collapsed patch edge such as the teapot's lid top and bottom centre) it is the limit of the normal as
-//! (u, v) moves into the patch: first S_u × S_uv + S_uv × S_v (the first-order term), and if that is zero too,
-//! the normal at a point moved towards the patch centre by 1e-6. Never NaN: a patch collapsed to a point or a
-//! line gives any unit vector. \throw as patch_point.
+//! The unit normal along S_u × S_v at (u, v). Where S_u × S_v counts as 0 (|S_u × S_v| ≤ 1e-12 · (|S_u| + |S_v|)²:
+//! a collapsed patch edge such as the teapot's lid top and bottom centre) it is the limit of the normal as (u, v)
+//! moves into the patch along the diagonal (u + σ_u δ, v + σ_v δ), δ → 0+, σ = +1 where the parameter is ≤ ½ and
+//! −1 above (towards the centre): the direction of the first-order term
+//!     d/dδ (S_u × S_v) = (σ_u S_uu + σ_v S_uv) × S_v + S_u × (σ_u S_uv + σ_v S_vv);
+//! if that is exactly zero too, the normal at (u + σ_u 10⁻⁶, v + σ_v 10⁻⁶); if that is exactly zero too (a patch
+//! collapsed to a point), (0, 0, 1). Never NaN. \throw as patch_point.
 glm::dvec3 patch_normal(const BezierPatch& S, double u, double v);
 
 //! A triangle mesh of the patches with positions and unit normals per vertex.
@@ -183,10 +192,11 @@ struct PatchMesh {
 };
 //! Each patch sampled at the (n + 1)² parameters (i/n, j/n), two triangles per grid cell: (i, j), (i+1, j),
 //! (i+1, j+1) and (i, j), (i+1, j+1), (i, j+1) with i along u, j along v, so each triangle turns like
-//! S_u × S_v (counter-clockwise seen from where it points). Vertices on patch borders (i or j = 0 or n) closer
-//! than weld_tol (absolute) are ONE vertex — shared along patch borders and at collapsed edges (the first
-//! sample's position and normal are kept; interior samples are never merged);
-//! a triangle with two equal vertices is dropped. flip = true reverses every triangle and normal: the teapot's
+//! S_u × S_v (counter-clockwise seen from where it points). Patches in order, samples i-major (i, then j).
+//! Welding: a border sample (i or j = 0 or n) within weld_tol (absolute, distance ≤ weld_tol; 0 welds equal
+//! positions) of an earlier border vertex IS the earliest such vertex (its position and normal are kept; shared
+//! patch borders and collapsed edges become one vertex); otherwise, and for every interior sample, a new vertex.
+//! A triangle with two equal vertices is dropped. flip = true reverses every triangle and normal: the teapot's
 //! file order needs flip = true for outward triangles and normals. Normals from patch_normal.
 //! \throw std::invalid_argument when n < 1, weld_tol < 0, or as patch_point.
 PatchMesh tessellate_patches(const std::vector<BezierPatch>& patches, int n, double weld_tol, bool flip);

@@ -82,11 +82,14 @@ Path polyline_path(const std::vector<glm::dvec3>& points, bool closed);
 //! The shoelace area ½ Σ (xᵢ yᵢ₊₁ − xᵢ₊₁ yᵢ): positive for a counter-clockwise loop. 0 for fewer than 3 points.
 double signed_area(const Loop& loop);
 
-//! Checks a profile and throws std::invalid_argument naming the loop ("outer loop", "hole 2") and the reason:
-//! fewer than 3 vertices; a coordinate that is not finite; two consecutive vertices equal; zero area; the loop
-//! intersects itself (two non-adjacent edges touch or cross, decided with exact orient2d); the outer loop is
-//! clockwise or a hole counter-clockwise ("wrong orientation"); a hole not strictly inside the outer loop, or two
-//! loops touching or crossing each other. Returns normally for a valid profile.
+//! Checks a profile and throws std::invalid_argument naming the loop ("outer loop", "hole 2"), the element and the
+//! reason: fewer than 3 vertices ("has 2 vertices (at least 3)"); a coordinate that is not finite ("vertex 4 is not
+//! finite"); two consecutive vertices equal ("vertices 3 and 0 are equal", the last and the first); the loop
+//! intersects itself ("edges 1 and 4 meet": two edges that are not neighbours touch or cross, decided with exact
+//! orient2d); zero area; the outer loop is clockwise or a hole counter-clockwise ("wrong orientation"); a hole not
+//! strictly inside the outer loop, or two loops touching or crossing each other. Checked in this order, loop by loop
+//! (the outer loop, then the holes), each loop's vertices and edges from index 0 up, so the message names the
+//! first problem. Returns normally for a valid profile.
 void validate_profile(const Profile& p);
 
 // ==== Task 2: triangulation (handout §3) ======================================================================
@@ -94,7 +97,9 @@ void validate_profile(const Profile& p);
 //! Triangles covering the profile's region exactly, by ear clipping (holes bridged into the outer loop first).
 //! Indices refer to profile_points(p); each triangle is counter-clockwise (positive area); the count is
 //! n + 2h − 2 for n points and h holes; the areas add up to the region's area (outer minus holes) and no two
-//! triangles overlap. \throw std::invalid_argument as validate_profile.
+//! triangles overlap. Which bridges and which ears is yours to choose: any triangulation of the region with
+//! these properties is right (each loop edge is an edge of exactly one triangle, each other edge of exactly two).
+//! \throw std::invalid_argument as validate_profile.
 std::vector<std::array<std::uint32_t, 3>> triangulate(const Profile& p);
 
 // ==== Task 3: extrusion (handout §4) ==========================================================================
@@ -141,8 +146,8 @@ struct RevolveOptions {
 //! revolution is closed by the two caps (the clipped profile's triangulation at φ = 0 and at φ = angle).
 //! Outward oriented, no zero-area triangle. A full revolution gives one closed surface per loop that does not
 //! lie on the axis (a loop touching the axis: sphere-like; one away from it, or a hole: torus-like).
-//! \throw std::invalid_argument when segments < 3, angle ≤ 0 or > 2π (a full revolution is |angle − 2π| ≤ 1e-12),
-//!        or as clip_to_axis.
+//! A full revolution is |angle − 2π| ≤ 1e-12; else angle must lie in (0, 2π).
+//! \throw std::invalid_argument when segments < 3, the angle is neither, or as clip_to_axis.
 PolygonSoup revolve(const Profile& p, const RevolveOptions& options);
 
 // ==== Task 5: frames (handout §6) =============================================================================
@@ -169,8 +174,10 @@ struct RmfResult {
 //! v₂ means no second reflection. Closed path: the frames are carried once around (the step from the last sample
 //! back to sample 0 included), the mismatch is measured, and frame i is then turned about Tᵢ by −mismatch·sᵢ/L
 //! (sᵢ the polyline length from sample 0 to sample i, L the loop's length), so the frames close up.
-//! \throw std::invalid_argument for fewer than 2 points, counts that differ, two consecutive points equal, or an
-//!        initial normal (nearly) parallel to T₀ (its part orthogonal to T₀ shorter than 1e-9 · its length).
+//! \throw std::invalid_argument for fewer than 2 points, counts that differ, two consecutive points equal (the
+//!        message names them: "points 3 and 4 are equal"; on a closed path also the last and the first, "points 9
+//!        and 0"), or an initial normal (nearly) parallel to T₀ (its part orthogonal to T₀ no longer than 1e-9 · its
+//!        length).
 RmfResult rotation_minimizing_frames(const Path& path, const glm::dvec3& initial_normal);
 
 // ==== Task 6: sweeping along a path (handout §7) ==============================================================
@@ -187,7 +194,9 @@ PolygonSoup sweep(const Profile& p, const Path& path, const std::vector<Frame>& 
 
 //! The local self-intersection check of a sweep: the profile's radius (largest distance of a profile point from
 //! the path, i.e. from (0, 0)) against the path's smallest radius of curvature (the circumradius of each three
-//! consecutive samples; wrapping on a closed path; collinear samples have infinite radius).
+//! consecutive samples; wrapping on a closed path; collinear samples have infinite radius). Local only: a path that
+//! comes back near itself (a coil wound tighter than the profile, strands of a knot too close) has no tight turn,
+//! and this check does not see it; lib's check_surface on the mesh does (geolab sweep runs both, handout §7).
 struct SweepCheck {
     double profile_radius = 0.0;
     double min_radius_of_curvature = 0.0;  //!< +infinity for a straight path

@@ -7,20 +7,23 @@
 //! | task | file            | functions                               | lecture ↔ code                              | handout |
 //! |------|-----------------|-----------------------------------------|---------------------------------------------|---------|
 //! | 1    | primitives.cpp  | primitive_distance                      | exact signed distances of the primitives    | §2      |
-//! | 2    | sdf.cpp         | smooth_min, sdf                         | ∪ = min, ∩ = max, A − B = max(a, −b), smin  | §3      |
+//! | 2    | sdf.cpp         | smooth_min, sdf (prepared; one-shot)    | ∪ = min, ∩ = max, A − B = max(a, −b), smin  | §3      |
 //! | 3    | pmc.cpp         | classify                                | point membership: in / on / out             | §4      |
 //! | 4    | spans.cpp       | primitive_spans                         | a ray's inside intervals in one primitive   | §5      |
-//! | 5    | combine.cpp     | combine, ray_spans                      | Roth's interval lists per operation         | §6      |
-//! | 6    | raycast.cpp     | first_hit, render_image                 | the first boundary point, Lambert image     | §7      |
+//! | 5    | combine.cpp     | combine, line_meets_box,                | Roth's interval lists; skip missed subtrees | §6      |
+//! |      |                 | ray_spans (prepared; one-shot)          |                                             |         |
+//! | 6    | raycast.cpp     | first_hit (prepared; one-shot),         | the first boundary point, Lambert image     | §7      |
+//! |      |                 | render_image                            |                                             |         |
 //! | 7    | mesh.cpp        | mesh_tree, volume                       | polygonize, divergence theorem              | §8      |
 //!
 //! Given (read, do not write; given.cpp): check_tree, bounds, scene_size, min_stretch, affine_inverse, the tree
-//! builders (leaf, combine_trees), real_roots (a polynomial root finder for the torus), from_scad (OpenSCAD scenes,
-//! read by lib's geolab/scad.hpp), PinholeCamera::ray.
+//! builders (leaf, combine_trees), prepare (a tree made ready for many rays or samples), real_roots (a polynomial
+//! root finder for the torus), from_scad (OpenSCAD scenes, read by lib's geolab/scad.hpp), PinholeCamera::ray.
 #include <optional>
 #include <string>
 #include <vector>
 
+#include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
@@ -73,6 +76,25 @@ struct Tree {
     GEOLAB_FIELDS(nodes, root)
 };
 
+//! A node of a prepared tree: the node itself and what every ray or sample would otherwise recompute (§7).
+struct PreparedNode {
+    Node node;                       //!< the tree's node, as it was (op, children, shape, size, Q, M, k)
+    glm::dmat4 inverse{1.0};         //!< leaves: M⁻¹, world → local (identity for inner nodes)
+    glm::dmat3 normal_map{1.0};      //!< leaves: (M⁻¹)ᵀ's 3×3 part, local normals → world (then normalize)
+    double stretch = 1.0;            //!< leaves: min_stretch(M) (1 for inner nodes)
+    glm::dvec3 lo{0.0}, hi{0.0};     //!< a world box containing the node's solid (±infinity where unbounded)
+    GEOLAB_FIELDS(node, inverse, normal_map, stretch, lo, hi)
+};
+
+//! A tree made ready for many rays or samples by prepare(): checked once, each leaf's maps inverted once, each
+//! node's box known. Nothing in it changes while rays are cast: threads may share one.
+struct PreparedTree {
+    std::vector<PreparedNode> nodes;  //!< nodes[i] is the tree's node i (children before parents)
+    int root = -1;
+    bool has_blend = false;           //!< some node is a blend (no exact interval list: ray casting refuses it)
+    GEOLAB_FIELDS(nodes, root, has_blend)
+};
+
 // ==== Given (given.cpp) =======================================================================================
 
 //! \throw std::invalid_argument naming the node when the tree is malformed: root or a child out of range, a child
@@ -85,6 +107,11 @@ Tree leaf(Shape s, glm::dvec3 size, const glm::dmat4& M = glm::dmat4(1.0));
 Tree quadric_leaf(const glm::dmat4& Q, const glm::dmat4& M = glm::dmat4(1.0));
 //! The tree op(a, b) (for Op::blend with radius k).
 Tree combine_trees(Op op, const Tree& a, const Tree& b, double k = 0.0);
+//! The tree prepared once for many rays or samples (handout §7): check_tree(t), then per node its M⁻¹, (M⁻¹)ᵀ and
+//! min_stretch(M) (leaves) and a box containing its solid: bounds() of its subtree grown on every side by 1e-9 of
+//! its extent and position, so that rounding never makes a line that meets the solid miss the box.
+//! \throw std::invalid_argument as check_tree.
+PreparedTree prepare(const Tree& t);
 //! The inverse of an affine map (L, t) ↦ (L⁻¹, −L⁻¹t). \throw std::invalid_argument when singular.
 glm::dmat4 affine_inverse(const glm::dmat4& M);
 //! The smallest singular value of M's 3×3 part: every local distance d is at least min_stretch(M)·d in world.
@@ -121,9 +148,12 @@ double primitive_distance(const Node& leaf, const glm::dvec3& p);
 double smooth_min(double a, double b, double k);
 
 //! The tree's signed field at the world point x. A leaf: min_stretch(M) · primitive_distance(leaf, M⁻¹x) (exact
-//! for rigid motions and uniform scalings; a lower bound of the distance's size for other maps). Union min(a, b),
-//! intersection max(a, b), difference max(a, −b), blend smooth_min(a, b, k). Negative inside.
-//! \throw std::invalid_argument when the tree is malformed (check_tree).
+//! for rigid motions and uniform scalings; a lower bound of the distance's size for other maps), with the node's
+//! prepared `stretch` and `inverse` (never recompute them from M: sdf is called for millions of samples). Union
+//! min(a, b), intersection max(a, b), difference max(a, −b), blend smooth_min(a, b, k). Negative inside.
+//! Precondition: t as prepare() made it.
+double sdf(const PreparedTree& t, const glm::dvec3& x);
+//! One point: sdf(prepare(t), x). \throw std::invalid_argument when the tree is malformed (check_tree).
 double sdf(const Tree& t, const glm::dvec3& x);
 
 // ==== Task 3: point membership classification (handout §4) ===================================================
@@ -156,26 +186,48 @@ struct Span {
     GEOLAB_FIELDS(t0, t1, n0, n1)
 };
 
-//! The spans of the whole line origin + t · direction (t ∈ ℝ), given in the leaf's LOCAL coordinates, inside the
-//! leaf's primitive: sorted, disjoint, each of positive length; a ray that only touches the solid (a tangent: a
-//! double root, an edge or a corner grazed) has no span there. Normals in local coordinates, unit length.
-//! Convex shapes give at most one span; a torus up to two (use real_roots for its quartic); a quadric up to two.
+//! Replaces `out` with the spans of the whole line origin + t · direction (t ∈ ℝ), given in the leaf's LOCAL
+//! coordinates, inside the leaf's primitive: sorted, disjoint, each of positive length; a ray that only touches the
+//! solid (a tangent: a double root, an edge or a corner grazed) has no span there. Normals in local coordinates,
+//! unit length. Convex shapes give at most one span; a torus up to two (use real_roots for its quartic); a quadric
+//! up to two. `out` keeps its capacity (clear, then push_back): a list reused from ray to ray allocates nothing.
 //! \throw std::invalid_argument when the node is not a leaf or the direction is zero.
-std::vector<Span> primitive_spans(const Node& leaf, const Ray& local);
+void primitive_spans(const Node& leaf, const Ray& local, std::vector<Span>& out);
 
 // ==== Task 5: combining interval lists (handout §6) ===========================================================
 
-//! The spans of op(A, B) from A's and B's sorted, disjoint spans (op: unite, intersect or subtract). Rule for
-//! equal parameters: all comparisons are exact; every endpoint at the same t is applied before deciding whether
-//! the result changes there, so spans that touch ([0, 1] and [1, 2]) merge in a union, and no span of zero length
-//! is ever output (box minus an equal box is empty). A result endpoint takes the normal of the operand that has
-//! an endpoint there (A's when both do); in a difference, the normals that come from B are NEGATED (they face into
-//! B, i.e. out of A − B). \throw std::invalid_argument for Op::leaf or Op::blend.
-std::vector<Span> combine(Op op, const std::vector<Span>& a, const std::vector<Span>& b);
+//! Replaces `out` with the spans of op(A, B) from A's and B's sorted, disjoint spans (op: unite, intersect or
+//! subtract). Rule for equal parameters: all comparisons are exact; every endpoint at the same t is applied before
+//! deciding whether the result changes there, so spans that touch ([0, 1] and [1, 2]) merge in a union, and no
+//! span of zero length is ever output (box minus an equal box is empty). A result endpoint takes the normal of the
+//! operand that has an endpoint there (A's when both do); in a difference, the normals that come from B are NEGATED
+//! (they face into B, i.e. out of A − B). `out` is another list than a and b; it keeps its capacity.
+//! \throw std::invalid_argument for Op::leaf or Op::blend.
+void combine(Op op, const std::vector<Span>& a, const std::vector<Span>& b, std::vector<Span>& out);
 
-//! The spans of the whole tree along the WORLD ray (t ∈ ℝ): a leaf's spans are primitive_spans of the ray mapped
-//! by M⁻¹ (same t), with normals mapped back by M⁻ᵀ and normalized; inner nodes combine their children's.
-//! \throw std::invalid_argument for a blend node (no exact interval list) or a malformed tree.
+//! Whether the whole line origin + t · direction (t ∈ ℝ) meets the closed box [lo, hi] (Kay and Kajiya's slabs, as
+//! for a box in Task 4: the line's parameter intervals inside the three slabs overlap; touching a face, an edge or a
+//! corner counts). Infinite lo or hi are allowed (a slab without a side); a direction component 0 (or −0) keeps the
+//! line inside that slab or outside it for every t. Precondition: lo ≤ hi, direction not zero.
+bool line_meets_box(const Ray& line, const glm::dvec3& lo, const glm::dvec3& hi);
+
+//! One span list per node of a tree, reused from ray to ray (lists[i] for node i): once they have grown, casting a
+//! ray allocates nothing. Casting writes them, so each thread has its own.
+using SpanLists = std::vector<std::vector<Span>>;
+
+//! Roth's interval lists of a prepared tree along the WORLD line (t ∈ ℝ); the tree's spans end up in
+//! lists[t.root]. First `lists` is resized to one list per node (existing lists keep their capacity). Then, from
+//! the root down, node i:
+//!   - gets an empty list when line_meets_box(world, lo, hi) is false for its box, and its subtree is not visited;
+//!   - a leaf: primitive_spans of the ray mapped by the node's `inverse` (o' = M⁻¹o, d' = M⁻¹d: the same t), each
+//!     finite end's normal mapped back by `normal_map` and normalized (a zero normal stays zero);
+//!   - an inner node: A's list first; for ∩ and − an empty A gives an empty list without visiting B (∅ ∩ B = ∅ − B
+//!     = ∅); otherwise B's list, then combine(op, A's, B's, lists[i]).
+//! Lists of nodes not visited keep what they held. Reads the prepared fields, never M.
+//! Precondition: t as prepare() made it. \throw std::invalid_argument when t.has_blend or the direction is zero.
+void ray_spans(const PreparedTree& t, const Ray& world, SpanLists& lists);
+//! One ray: the spans of ray_spans(prepare(t), world, lists) with fresh lists (lists[root]).
+//! \throw std::invalid_argument for a blend node, a malformed tree or a zero direction.
 std::vector<Span> ray_spans(const Tree& t, const Ray& world);
 
 // ==== Task 6: ray casting (handout §7) ========================================================================
@@ -187,8 +239,12 @@ struct Hit {
     GEOLAB_FIELDS(t, point, normal)
 };
 
-//! The first span endpoint with t ≥ t_min (finite): the entry t0 of the first span with t0 ≥ t_min, or, when the
-//! ray starts inside (t0 < t_min ≤ t1), the exit t1 with its outward normal. nullopt when there is none.
+//! The first span end with t ≥ t_min (finite) of ray_spans(t, ray, lists): the entry t0 of the first span with
+//! t0 ≥ t_min, or, when the ray starts inside (t0 < t_min ≤ t1), the exit t1 with its outward normal. nullopt when
+//! there is none. `lists` as in ray_spans (one per thread; reuse it for every ray).
+//! \throw std::invalid_argument as ray_spans.
+std::optional<Hit> first_hit(const PreparedTree& t, const Ray& ray, double t_min, SpanLists& lists);
+//! One ray: first_hit(prepare(t), ray, t_min, lists) with fresh lists.
 std::optional<Hit> first_hit(const Tree& t, const Ray& ray, double t_min);
 
 //! A pinhole camera (given): rays from `eye` through the pixel centres of a width × height image looking at
@@ -201,15 +257,17 @@ struct PinholeCamera {
     Ray ray(int x, int y, int width, int height) const;
 };
 
-//! One ray per pixel (camera.ray), first_hit with t_min = 0: a hit is grey v = 0.1 + 0.8·|n·l| (l the unit
-//! direction to the light), pixel round(255·v) in R, G and B; a miss is white (255). A = 255. Rows top to bottom.
+//! One ray per pixel (camera.ray), first_hit with t_min = 0 on the tree prepared once, one SpanLists reused for
+//! every pixel: a hit is grey v = 0.1 + 0.8·|n·l| (l the unit direction to the light), pixel round(255·v) in R, G
+//! and B; a miss is white (255). A = 255. Rows top to bottom.
 //! \throw std::invalid_argument when width or height is < 1, or as ray_spans.
 render::Image render_image(const Tree& t, const PinholeCamera& camera, int width, int height, const glm::dvec3& light);
 
 // ==== Task 7: meshes and volumes (handout §8) =================================================================
 
-//! The tree's surface through lib's reference polygonizer (geolab/polygonize.hpp) applied to sdf() over the box
-//! bounds(t) grown by 5% of its diagonal on every side, `resolution` cells along its longest side.
+//! The tree's surface through lib's reference polygonizer (geolab/polygonize.hpp) applied to sdf() of the tree
+//! prepared once, over the box bounds(t) grown by 5% of its diagonal on every side, `resolution` cells along its
+//! longest side.
 //! \throw std::invalid_argument when bounds(t) is not finite or resolution < 2, or as sdf.
 PolygonSoup mesh_tree(const Tree& t, int resolution);
 
@@ -222,11 +280,15 @@ double volume(const PolygonSoup& mesh);
 #ifdef GEOLAB_BOUNDARY
 GEOLAB_BOUNDARY(primitive_distance, double(const Node&, const glm::dvec3&))
 GEOLAB_BOUNDARY(smooth_min, double(double, double, double))
+GEOLAB_BOUNDARY(sdf, double(const PreparedTree&, const glm::dvec3&))
 GEOLAB_BOUNDARY(sdf, double(const Tree&, const glm::dvec3&))
 GEOLAB_BOUNDARY(classify, Membership(const Tree&, const glm::dvec3&, double))
-GEOLAB_BOUNDARY(primitive_spans, std::vector<Span>(const Node&, const Ray&))
-GEOLAB_BOUNDARY(combine, std::vector<Span>(Op, const std::vector<Span>&, const std::vector<Span>&))
+GEOLAB_BOUNDARY(primitive_spans, void(const Node&, const Ray&, std::vector<Span>&))
+GEOLAB_BOUNDARY(combine, void(Op, const std::vector<Span>&, const std::vector<Span>&, std::vector<Span>&))
+GEOLAB_BOUNDARY(line_meets_box, bool(const Ray&, const glm::dvec3&, const glm::dvec3&))
+GEOLAB_BOUNDARY(ray_spans, void(const PreparedTree&, const Ray&, SpanLists&))
 GEOLAB_BOUNDARY(ray_spans, std::vector<Span>(const Tree&, const Ray&))
+GEOLAB_BOUNDARY(first_hit, std::optional<Hit>(const PreparedTree&, const Ray&, double, SpanLists&))
 GEOLAB_BOUNDARY(first_hit, std::optional<Hit>(const Tree&, const Ray&, double))
 GEOLAB_BOUNDARY(render_image, render::Image(const Tree&, const PinholeCamera&, int, int, const glm::dvec3&))
 GEOLAB_BOUNDARY(mesh_tree, PolygonSoup(const Tree&, int))

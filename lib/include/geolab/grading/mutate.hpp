@@ -14,6 +14,7 @@
 #include <map>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace geolab::grading::mutate {
@@ -108,7 +109,16 @@ private:
     std::vector<Token> tokens_;  // code tokens only (no comments or preprocessor lines)
     std::vector<Mutant> mutants_;
     std::vector<Site> sites_;
-    std::vector<std::size_t> relax_tokens_;  // the `constexpr` of variables (written `const` in a relaxed schema)
+    //! the `constexpr` tokens a relaxed schema rewrites, and their text there: `const` (a variable), `inline` (a
+    //! function) or nothing (a lambda)
+    std::vector<std::pair<std::size_t, std::string>> relax_tokens_;
+    //! the constexpr variables at namespace scope (tables): a relaxed schema digests their bytes at start-up
+    struct Table {
+        std::size_t end = 0;             // the token ';' that ends the declaration
+        std::vector<std::string> names;  // the variables it declares
+    };
+    std::vector<Table> tables_;
+    int first_id_ = 0;
 };
 
 //! The run-time half of the schema (namespace geolab_mutant_rt), put at the top of every schema file.
@@ -128,9 +138,11 @@ struct MutateOptions {
     std::size_t max = 0;           //!< 0: every mutant; else a random sample of this many
     unsigned long long seed = 1;   //!< of the sample
     int jobs = 1;                  //!< mutants run at once
-    std::string only;              //!< only this file (basename or path under solutions/NN_name)
+    std::string only;              //!< only these: FILE (basename or path under solutions/NN_name) or FILE:LINE,
+                                   //!< several separated by commas
     std::filesystem::path log;     //!< JSON lines, one per mutant (empty: none)
     bool resume = false;           //!< skip the mutants already in the log
+    bool rerun_survivors = false;  //!< with resume: grade the log's survivors again (after tests were added)
     bool full = false;             //!< run every test of a mutant (default: stop at the first failure)
     std::string order = "killer";  //!< test order: killer (last killer of the file, then cheap), cheap, listing
     double timeout_factor = 10;    //!< a test is timed out after factor × its baseline time + 2 s (≤ its limit)
@@ -142,7 +154,8 @@ struct MutateOptions {
 struct MutantResult {
     Mutant mutant;
     Outcome outcome = Outcome::survived;
-    std::string mode;      //!< "schema", "rebuild", or "log" (taken from --log on --resume)
+    std::string mode;      //!< "schema", "rebuild", "tables" (proven equivalent), or "log" (taken from --log on --resume)
+    bool proven = false;   //!< equivalent, proven by the tool: the same constexpr tables (see run_mutate)
     std::string detail;    //!< the killing test and its status, or the compiler's first error
     std::string anchor;    //!< see anchor(): what equivalent-mutants.txt matches
     int tests_run = 0;
@@ -162,6 +175,7 @@ struct MutateReport {
     double build_seconds = 0, baseline_seconds = 0, seconds = 0;
     std::size_t tests_run = 0;
     std::size_t count(Outcome o) const;
+    std::size_t proven_equivalents() const;  //!< equivalent mutants the tool proved so (the rest were reviewed)
     //! killed (timed out included) / (killed + survived); equivalent and stillborn mutants excluded.
     double rate() const;
 };

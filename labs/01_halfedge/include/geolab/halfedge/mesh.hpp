@@ -37,6 +37,7 @@
 #include <vector>
 
 #include "geolab/boundary.hpp"
+#include "geolab/memory.hpp"
 
 namespace geolab::halfedge {
 
@@ -176,7 +177,8 @@ public:
     std::vector<glm::dvec3>& positions() { return positions_; }
 
     // ---- building (low level: nothing is checked; run validate() when done) --------------------------------
-    //! Reserve room for nv vertices, ne edges (2·ne half-edges) and nf faces.
+    //! Reserve room for nv vertices, ne edges (2·ne half-edges) and nf faces. Large arrays ask for 2 MiB pages
+    //! (geolab/memory.hpp): fewer page faults when they are first written; what they hold is the same.
     void reserve(std::size_t nv, std::size_t ne, std::size_t nf) {
         positions_.reserve(nv);
         vertex_halfedge_.reserve(nv);
@@ -184,6 +186,8 @@ public:
         next_.reserve(2 * ne);
         face_.reserve(2 * ne);
         face_halfedge_.reserve(nf);
+        prefer_huge_pages(positions_), prefer_huge_pages(vertex_halfedge_), prefer_huge_pages(face_halfedge_);
+        prefer_huge_pages(to_vertex_), prefer_huge_pages(next_), prefer_huge_pages(face_);
     }
     //! A new vertex at p, with no half-edge yet (isolated).
     Vertex add_vertex(const glm::dvec3& p) {

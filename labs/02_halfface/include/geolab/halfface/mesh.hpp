@@ -55,6 +55,7 @@
 #include <vector>
 
 #include "geolab/boundary.hpp"
+#include "geolab/memory.hpp"
 
 namespace geolab::halfface {
 
@@ -268,9 +269,10 @@ public:
     std::vector<glm::dvec3>& positions() { return positions_; }
 
     //! The half-faces that have v on their loop, in increasing index order. With VertexCache: the cache (kept by
-    //! rebuild_vertex_cache()); without: a walk over the half-edges leaving v (h → next(twin(h)), next(mate(h)),
-    //! twin(prev(h)), mate(prev(h))), O(local size), which finds them all when v is a manifold vertex (its cells
-    //! connected through faces around v; not, e.g., at the one vertex two tetrahedra share).
+    //! rebuild_vertex_cache()), O(n) for the n half-faces at v; without: a walk over the half-edges leaving v
+    //! (h → next(twin(h)), next(mate(h)), twin(prev(h)), mate(prev(h))), O(n log n) comparisons, which finds them
+    //! all when v is a manifold vertex (its cells connected through faces around v; not, e.g., at the one vertex
+    //! two tetrahedra share).
     std::vector<HalfFace> vertex_halffaces(Vertex v) const {
         if constexpr (T::vertex_cache) {
             return {vcache_.begin() + vcache_begin_[at(v)], vcache_.begin() + vcache_begin_[v.idx + 1]};
@@ -283,12 +285,13 @@ public:
         std::vector<HalfFace> out;
         const HalfEdge h0 = halfedge(v);
         if (!h0.is_valid()) return out;
-        std::vector<HalfEdge> stack{h0}, seen{h0};
+        std::vector<HalfEdge> stack{h0}, seen{h0};  // seen: sorted, for a binary search
         auto push = [&](HalfEdge g) {
-            if (g.is_valid() && std::find(seen.begin(), seen.end(), g) == seen.end()) {
-                seen.push_back(g);
-                stack.push_back(g);
-            }
+            if (!g.is_valid()) return;
+            const auto at = std::lower_bound(seen.begin(), seen.end(), g);
+            if (at != seen.end() && *at == g) return;
+            seen.insert(at, g);
+            stack.push_back(g);
         };
         while (!stack.empty()) {
             const HalfEdge h = stack.back();
@@ -367,14 +370,21 @@ public:
         grow_properties(Kind::cell, n_cells());
         return Cell{std::uint32_t(n_cells() - 1)};
     }
-    void reserve(std::size_t nv, std::size_t ne, std::size_t nh, std::size_t nf, std::size_t nc) {
+    //! Room for nv vertices, ne edges, nh half-edges, nf faces (2 nf half-faces) and nc cells with n_cell_hf
+    //! half-faces in all, so that adding that many moves no array.
+    void reserve(std::size_t nv, std::size_t ne, std::size_t nh, std::size_t nf, std::size_t nc,
+                 std::size_t n_cell_hf = 0) {
         positions_.reserve(nv), vertex_halfedge_.reserve(nv), vertex_deleted_.reserve(nv);
         edge_vertices_.reserve(ne), edge_halfedge_.reserve(ne), edge_deleted_.reserve(ne);
         to_vertex_.reserve(nh), edge_.reserve(nh), halfface_.reserve(nh), next_.reserve(nh), twin_.reserve(nh);
         if constexpr (T::store_prev) prev_.reserve(nh);
         if constexpr (T::store_mate) mate_.reserve(nh);
         face_deleted_.reserve(nf), halfface_halfedge_.reserve(2 * nf), halfface_cell_.reserve(2 * nf);
-        cell_begin_.reserve(nc + 1), cell_deleted_.reserve(nc);
+        cell_begin_.reserve(nc + 1), cell_deleted_.reserve(nc), cell_halffaces_.reserve(n_cell_hf);
+        // large arrays: 2 MiB pages, fewer page faults on the first write (lib memory.hpp)
+        prefer_huge_pages(to_vertex_), prefer_huge_pages(edge_), prefer_huge_pages(halfface_);
+        prefer_huge_pages(next_), prefer_huge_pages(twin_), prefer_huge_pages(prev_), prefer_huge_pages(mate_);
+        prefer_huge_pages(halfface_halfedge_), prefer_huge_pages(halfface_cell_), prefer_huge_pages(cell_halffaces_);
     }
     void set_next(HalfEdge h, HalfEdge n) { next_[at(h)] = n; }
     //! Stores prev (does nothing without StorePrev: prev is then derived).
@@ -391,8 +401,9 @@ public:
     void set_cell(HalfFace hf, Cell c) { halfface_cell_[at(hf)] = c; }
     void set_halfedge(Edge e, HalfEdge h) { edge_halfedge_[at(e)] = h; }
     void set_halfedge(Vertex v, HalfEdge h) { vertex_halfedge_[at(v)] = h; }
-    //! Recomputes the vertex → half-face cache from the half-edges (not deleted ones). O(#half-edges). Does
-    //! nothing without VertexCache.
+    //! Recomputes the vertex → half-face cache from the half-edges (not deleted ones). O(#half-edges + #vertices)
+    //! when half-edges are numbered in the order of their half-faces (as build_mesh and garbage_collection leave
+    //! them); otherwise each vertex's list is sorted too. Does nothing without VertexCache.
     void rebuild_vertex_cache() {
         if constexpr (T::vertex_cache) {
             const std::size_t nv = n_vertices();
@@ -403,10 +414,12 @@ public:
             for (std::size_t i = 0; i < nv; ++i) vcache_begin_[i + 1] += vcache_begin_[i];
             vcache_.assign(vcache_begin_[nv], HalfFace{});
             std::vector<std::uint32_t> fill(vcache_begin_.begin(), vcache_begin_.end() - 1);
-            for (HalfEdge h : halfedges())  // increasing h: half-faces come in increasing order per vertex
+            for (HalfEdge h : halfedges())
                 if (!is_deleted(h)) vcache_[fill[to_vertex(h).idx]++] = halfface(h);
-            for (std::size_t v = 0; v < nv; ++v)
-                std::sort(vcache_.begin() + vcache_begin_[v], vcache_.begin() + vcache_begin_[v + 1]);
+            for (std::size_t v = 0; v < nv; ++v) {  // sorted already when half-faces grow with their half-edges
+                const auto first = vcache_.begin() + vcache_begin_[v], last = vcache_.begin() + vcache_begin_[v + 1];
+                if (!std::is_sorted(first, last)) std::sort(first, last);
+            }
         }
     }
     //! The raw cache, for checks: per vertex v the entries [begin[v], begin[v+1]).
@@ -554,14 +567,25 @@ public:
         r.rebuild_vertex_cache();
         return r;
     }
-    //! Bytes held by the connectivity arrays (positions and properties excluded), for the benchmark.
-    std::size_t connectivity_bytes() const {
+    //! Bytes held by the connectivity arrays of each element kind (their capacity; positions and properties
+    //! excluded), for the benchmark. `faces` counts the per-face and the per-half-face arrays.
+    struct MemoryUse {
+        std::size_t vertices = 0, edges = 0, halfedges = 0, faces = 0, cells = 0, vertex_cache = 0;
+        std::size_t total() const { return vertices + edges + halfedges + faces + cells + vertex_cache; }
+    };
+    MemoryUse memory_use() const {
         auto b = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
-        return b(vertex_halfedge_) + b(vertex_deleted_) + b(edge_vertices_) + b(edge_halfedge_) + b(edge_deleted_) +
-               b(to_vertex_) + b(edge_) + b(halfface_) + b(next_) + b(twin_) + b(prev_) + b(mate_) +
-               b(face_deleted_) + b(halfface_halfedge_) + b(halfface_cell_) + b(cell_begin_) +
-               b(cell_halffaces_) + b(cell_deleted_) + b(vcache_begin_) + b(vcache_);
+        MemoryUse u;
+        u.vertices = b(vertex_halfedge_) + b(vertex_deleted_);
+        u.edges = b(edge_vertices_) + b(edge_halfedge_) + b(edge_deleted_);
+        u.halfedges = b(to_vertex_) + b(edge_) + b(halfface_) + b(next_) + b(twin_) + b(prev_) + b(mate_);
+        u.faces = b(face_deleted_) + b(halfface_halfedge_) + b(halfface_cell_);
+        u.cells = b(cell_begin_) + b(cell_halffaces_) + b(cell_deleted_);
+        u.vertex_cache = b(vcache_begin_) + b(vcache_);
+        return u;
     }
+    //! Bytes held by all connectivity arrays: memory_use().total().
+    std::size_t connectivity_bytes() const { return memory_use().total(); }
 
     //! The number of elements of kind k.
     std::size_t count(Kind k) const {

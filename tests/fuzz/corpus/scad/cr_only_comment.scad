@@ -1,0 +1,1 @@
+cube();// a commentsphere(1);
