@@ -52,6 +52,8 @@ TEST_SUITE("Task 7: voxelization through the graphics pipeline") {
         CHECK_THROWS_AS(slicing_camera(Dims{4, 4, 4}, 3), std::invalid_argument);
         CHECK_THROWS_AS(slicing_camera(Dims{4, 4, 4}, -1), std::invalid_argument);
         CHECK_THROWS_AS(slicing_camera(Dims{4, 0, 4}, 2), std::invalid_argument);
+        CHECK_THROWS_AS(slicing_camera(Dims{0, 4, 4}, 1), std::invalid_argument);
+        CHECK_THROWS_AS(slicing_camera(Dims{4, 4, -3}, 1), std::invalid_argument);
         CHECK_THROWS_AS(slicing_camera(Dims{4, 4, 0}, 0), std::invalid_argument);
     }
 
@@ -287,7 +289,14 @@ TEST_SUITE("Task 7: voxelization through the graphics pipeline") {
         const BitGrid empty = voxelize_gl(box, Dims{4, 0, 4}, 2);
         CHECK(empty.dims == Dims{4, 0, 4});
         CHECK(empty.words.empty());
-        CHECK_THROWS_AS(voxelize_gl(box, Dims{9000, 4, 4}, 2), std::invalid_argument);
+        // images up to 8192 pixels wide; wider is an error, found before a grid of 2^39 voxels is allocated
+        const BitGrid wide = voxelize_gl(box, Dims{8192, 3, 2}, 2);
+        CHECK(count_bits(wide) == 4);  // the box [1, 3]³: voxels (1..2, 1..2, 1)
+        CHECK(voxelize_gl(box, Dims{2, 8192, 3}, 0).dims == Dims{2, 8192, 3});
+        CHECK_THROWS_AS(voxelize_gl(box, Dims{8193, 3, 2}, 2), std::invalid_argument);
+        CHECK_THROWS_AS(voxelize_gl(box, Dims{2, 3, 8193}, 1), std::invalid_argument);
+        CHECK_THROWS_AS(voxelize_gl(box, Dims{std::int64_t(1) << 19, 2, std::int64_t(1) << 19}, 2), std::invalid_argument);
+        CHECK_THROWS_AS(voxelize_gl(box, Dims{2, std::int64_t(1) << 19, std::int64_t(1) << 19}, 0), std::invalid_argument);
         // no triangle at all: nothing is inside
         PolygonSoup none;
         none.positions = box.positions;

@@ -90,7 +90,7 @@ int run_gl(const VoxelizeOpts& o, const PolygonSoup& u, const voxels::Grid& grid
         const bool parity = s.method == vx::SolidMethod::parity;
         report["solid_voxels"] = vx::count_set(s.grid);
         report["solid_method"] = parity ? "parity" : "flood_fill";
-        st.done("cpu solid", std::to_string(vx::count_set(s.grid)) + " voxels (" +
+        st.done("cpu", std::to_string(vx::count_set(s.grid)) + " voxels (" +
                                  (parity ? "parity" : "outside flood fill: the mesh is not closed") + ")");
         // the differing voxels, and how far the farthest of their centres lies from the mesh (up to 1000 of them)
         std::vector<std::array<std::int64_t, 3>> differ;

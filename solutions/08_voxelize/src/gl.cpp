@@ -3,6 +3,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -83,13 +84,13 @@ BitGrid voxelize_gl(const PolygonSoup& mesh, const Dims& dims, int axis) {
     // BEGIN SOLUTION
     check_axis(axis, "voxelize_gl");
     check_soup(mesh);
-    BitGrid grid(dims);
-    if (dims.count() == 0) return grid;
     const std::int64_t n[3] = {dims.nx, dims.ny, dims.nz};
     const std::int64_t nu = n[axis_u[axis]], nv = n[axis_v[axis]], na = n[axis];
-    if (nu > 8192 || nv > 8192)
+    if (nu > 8192 || nv > 8192)  // before the grid is allocated
         throw std::invalid_argument("voxelize_gl: an image of " + std::to_string(nu) + " x " + std::to_string(nv) +
                                     " pixels is larger than 8192 x 8192");
+    BitGrid grid(dims);
+    if (dims.count() == 0) return grid;
     // Step 1: the fan triangles and their slabs; count the triangles of each slab.
     std::vector<std::array<std::uint32_t, 3>> tris;
     for (std::size_t f = 0; f < mesh.n_faces(); ++f) {
@@ -97,16 +98,16 @@ BitGrid voxelize_gl(const PolygonSoup& mesh, const Dims& dims, int axis) {
         for (std::size_t t = 1; t + 1 < vs.size(); ++t) tris.push_back({vs[0], vs[t], vs[t + 1]});
     }
     std::vector<SlabRange> ranges(tris.size());
-    std::vector<std::size_t> start(std::size_t(na) + 1, 0);  // slab k's triangles: [start[k], start[k + 1])
+    std::vector<std::size_t> start(std::size_t(na) + 1);  // slab k's triangles: [start[k], start[k + 1])
     for (std::size_t t = 0; t < tris.size(); ++t) {
         const auto& [i, j, l] = tris[t];
         ranges[t] = slab_range(mesh.positions[i], mesh.positions[j], mesh.positions[l], dims, axis);
         for (std::int64_t k = ranges[t].first; k <= ranges[t].last; ++k) ++start[std::size_t(k) + 1];
     }
-    for (std::size_t k = 0; k < std::size_t(na); ++k) start[k + 1] += start[k];
+    std::partial_sum(start.begin(), start.end(), start.begin());
     // Step 2: the corners, grouped by slab (a triangle once per slab it is drawn in).
     std::vector<glm::dvec3> corners(3 * start.back());
-    std::vector<std::size_t> next(start.begin(), start.end() - 1);
+    std::vector<std::size_t> next = start;  // the next free place of each slab
     for (std::size_t t = 0; t < tris.size(); ++t)
         for (std::int64_t k = ranges[t].first; k <= ranges[t].last; ++k) {
             const std::size_t s = next[std::size_t(k)]++;

@@ -277,7 +277,7 @@ void store_layer(const std::vector<std::uint8_t>& image, int axis, std::int64_t 
 //! except at voxels whose centre lies within float rounding (and the rasterizer's 1/256-pixel snapping) of the
 //! surface (handout §8). An empty grid (a size 0) is returned without drawing.
 //! \throw std::invalid_argument when axis ∉ {0, 1, 2}, the soup is invalid (check_soup) or n_u or n_v exceeds
-//! 8192; std::runtime_error when OSMesa fails.
+//! 8192 (checked before the grid is allocated); std::runtime_error when OSMesa fails.
 BitGrid voxelize_gl(const PolygonSoup& mesh, const Dims& dims, int axis = 2);
 
 // ==== The grading boundary (for the grader; nothing to do for you) ===========================================
