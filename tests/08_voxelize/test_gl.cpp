@@ -293,6 +293,9 @@ TEST_SUITE("Task 7: voxelization through the graphics pipeline") {
         const BitGrid wide = voxelize_gl(box, Dims{8192, 3, 2}, 2);
         CHECK(count_bits(wide) == 4);  // the box [1, 3]³: voxels (1..2, 1..2, 1)
         CHECK(voxelize_gl(box, Dims{2, 8192, 3}, 0).dims == Dims{2, 8192, 3});
+        CHECK(count_bits(voxelize_gl(box, Dims{3, 8192, 2}, 2)) == 4);
+        CHECK_THROWS_AS(voxelize_gl(box, Dims{8193, 8192, 8192}, 2), std::invalid_argument);
+        CHECK_THROWS_AS(voxelize_gl(box, Dims{8192, 8193, 8192}, 2), std::invalid_argument);
         CHECK_THROWS_AS(voxelize_gl(box, Dims{8193, 3, 2}, 2), std::invalid_argument);
         CHECK_THROWS_AS(voxelize_gl(box, Dims{2, 3, 8193}, 1), std::invalid_argument);
         CHECK_THROWS_AS(voxelize_gl(box, Dims{std::int64_t(1) << 19, 2, std::int64_t(1) << 19}, 2), std::invalid_argument);
