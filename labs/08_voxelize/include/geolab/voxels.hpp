@@ -13,11 +13,13 @@
 //! |      |              | bits_union, bits_intersection, bits_difference,        | bitwise on packed grids                |         |
 //! |      |              | bits_complement                                        |                                        |         |
 //! | 6    | binvox.cpp   | encode_binvox, decode_binvox                           | x, z, y order, run-length pairs        | §7      |
+//! | 7    | gl.cpp       | slicing_camera, slab_range, store_layer, voxelize_gl   | slices through OpenGL, XOR parity      | §9      |
 //!
 //! Given (read, do not write; given.cpp and this header): the grid's geometry (Grid, fit_grid, to_grid_units), the
 //! packed grid's layout and accessors (BitGrid::get/set), word-aligned slabs for threads (word_aligned_slabs), file
 //! wrappers (read_binvox, write_binvox), the raw format and the file-backed mode that streams slabs of your
-//! voxelization to a file (write_raw, read_raw, voxelize_to_file; handout §8).
+//! voxelization to a file (write_raw, read_raw, voxelize_to_file; handout §8); for Task 7, lib's SliceRasterizer
+//! (geolab/render/slicer.hpp: the OpenGL plumbing).
 //!
 //! **Grid units.** Every task works in grid units: voxel (i, j, k) is the closed box [i, i+1] × [j, j+1] × [k, k+1]
 //! and its centre is (i + ½, j + ½, k + ½). to_grid_units() maps a mesh from world coordinates (Grid) there; the
@@ -29,10 +31,12 @@
 #include <vector>
 
 #include <glm/common.hpp>
+#include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
 #include "geolab/boundary.hpp"
 #include "geolab/errors.hpp"
+#include "geolab/render/slicer.hpp"  // Task 7 draws with SliceRasterizer
 #include "geolab/soup.hpp"
 
 namespace geolab::voxels {
@@ -250,7 +254,7 @@ Binvox decode_binvox(const std::string& bytes, const std::string& name = "<memor
 void write_binvox(const std::filesystem::path& path, const Binvox& file);
 Binvox read_binvox(const std::filesystem::path& path);
 
-// ==== Given: the raw format and the file-backed mode (handout §8) ==============================================
+// ==== Given: the raw format and the file-backed mode (handout §8) =======================================
 
 //! The raw format (given): the grid's words as they are in memory (little-endian 64-bit words, voxel
 //! i + nx·(j + ny·k) is bit index mod 64 of word index / 64), then a 40-byte trailer: the 8 bytes "GLVOXRAW",
@@ -284,6 +288,58 @@ struct FileVoxels {
 FileVoxels voxelize_to_file(const PolygonSoup& mesh, const Dims& dims, bool solid, const std::filesystem::path& path,
                             int threads = 1, std::int64_t slab_layers = 32,
                             const std::function<void(std::int64_t, std::int64_t)>& progress = {});
+=======
+// ==== Task 7: voxelization through the graphics pipeline (handout §9) ========================================
+// Seed 002's method on OpenGL (OSMesa, software, headless): look along an axis with an orthographic camera, one
+// pixel per column of voxels; for layer k = 0, 1, ... draw the triangles' crossings of the depth slab
+// (k − ½, k + ½] with XOR into the same image, so that the image holds, in every pixel, the parity of the
+// crossings below the voxel centres of layer k; read it back into layer k. geolab/render/slicer.hpp's
+// SliceRasterizer (lib, given) is the plumbing: the GL context, the shaders, the slab test, the XOR, the read-back.
+// You choose the camera, which triangles each slab draws, the slab bounds and where each pixel goes.
+
+//! The slicing camera along `axis` for a dims-sized grid: the affine map clip = M · (p, 1) (p in grid units)
+//! onto an n_u × n_v image, where u, v are the two other axes in increasing order (axis 0: u = y, v = z;
+//! axis 1: u = x, v = z; axis 2: u = x, v = y):
+//!     clip.x = 2·p_u / n_u − 1,   clip.y = 2·p_v / n_v − 1,   clip.z = p_axis,   clip.w = 1.
+//! So pixel (i, j)'s centre looks down the column (u, v) = (i + ½, j + ½), and the depth stays in grid units
+//! (no near/far clipping: nothing needs to fit [−1, 1], and the voxel centres k + ½ are exact floats).
+//! \throw std::invalid_argument when axis ∉ {0, 1, 2} or a size of dims is < 1.
+glm::dmat4 slicing_camera(const Dims& dims, int axis);
+
+//! The layers first..last (empty when first > last) whose slabs a triangle must be drawn in.
+struct SlabRange {
+    std::int64_t first = 0, last = -1;
+    GEOLAB_FIELDS(first, last)
+    bool operator==(const SlabRange&) const = default;
+};
+
+//! The slabs of triangle (a, b, c) (grid units) along `axis` in a dims-sized grid (n layers along the axis).
+//! Slab k ≥ 1 holds the depths (k − ½, k + ½] and slab 0 everything up to ½, (−∞, ½]: the part of a mesh below
+//! the grid flips whole columns there (the paper's "virtual filled starting slice"). Depth d lies in slab
+//! s(d) = max(0, ⌈d − ½⌉) (s(d) ≥ n: above the last layer's centres, in no slab). The triangle's crossings lie
+//! between its corners' depths d_min and d_max, but the GPU decides them in float: draw it one slab more on each
+//! side, so that a crossing rounded across a slab bound is still drawn:
+//!     first = max(0, s(d_min) − 1),   last = min(n − 1, s(d_max) + 1)
+//! When first > last (the triangle lies above the last layer's centres) the range is empty: return {0, −1}.
+//! \throw std::invalid_argument when axis ∉ {0, 1, 2}.
+SlabRange slab_range(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, const Dims& dims, int axis);
+
+//! Read-back: stores an n_u × n_v image (SliceRasterizer::read(): pixel (i, j) at [j · n_u + i], 0 or 1) into
+//! layer k of `grid` along `axis`: voxel (u, v, axis) = (i, j, k) becomes set when the pixel is non-zero and
+//! unset when it is 0; other layers are unchanged. \throw std::invalid_argument when axis ∉ {0, 1, 2} or
+//! image.size() ≠ n_u · n_v; std::out_of_range when k is not a layer.
+void store_layer(const std::vector<std::uint8_t>& image, int axis, std::int64_t k, BitGrid& grid);
+
+//! Solid voxelization through the graphics pipeline: a SliceRasterizer of n_u × n_v pixels with the triangles
+//! (fan of each face) repeated once per slab of their slab_range, grouped by slab, seen through slicing_camera;
+//! set_depth_rank(axis), so that a voxel centre exactly on a face is decided like parity_fill's c + (ε, ε², ε³);
+//! then for k = 0 .. n − 1: draw slab k's triangles with the bounds (k − ½, k + ½] ((−∞, ½] for k = 0) into the
+//! same image (never cleared), read it, store_layer. On a closed mesh the result is parity_fill's along any axis,
+//! except at voxels whose centre lies within float rounding (and the rasterizer's 1/256-pixel snapping) of the
+//! surface (handout §9). An empty grid (a size 0) is returned without drawing.
+//! \throw std::invalid_argument when axis ∉ {0, 1, 2}, the soup is invalid (check_soup) or n_u or n_v exceeds
+//! 8192 (checked before the grid is allocated); std::runtime_error when OSMesa fails.
+BitGrid voxelize_gl(const PolygonSoup& mesh, const Dims& dims, int axis = 2);
 
 // ==== The grading boundary (for the grader; nothing to do for you) ===========================================
 #ifdef GEOLAB_BOUNDARY
@@ -308,6 +364,10 @@ GEOLAB_BOUNDARY(bits_difference, BitGrid(const BitGrid&, const BitGrid&))
 GEOLAB_BOUNDARY(bits_complement, BitGrid(const BitGrid&))
 GEOLAB_BOUNDARY(encode_binvox, std::string(const Binvox&))
 GEOLAB_BOUNDARY(decode_binvox, Binvox(const std::string&, const std::string&))
+GEOLAB_BOUNDARY(slicing_camera, glm::dmat4(const Dims&, int))
+GEOLAB_BOUNDARY(slab_range, SlabRange(const glm::dvec3&, const glm::dvec3&, const glm::dvec3&, const Dims&, int))
+GEOLAB_BOUNDARY(store_layer, void(const std::vector<std::uint8_t>&, int, std::int64_t, BitGrid&))
+GEOLAB_BOUNDARY(voxelize_gl, BitGrid(const PolygonSoup&, const Dims&, int))
 #endif
 
 }  // namespace geolab::voxels
