@@ -254,7 +254,7 @@ Binvox decode_binvox(const std::string& bytes, const std::string& name = "<memor
 void write_binvox(const std::filesystem::path& path, const Binvox& file);
 Binvox read_binvox(const std::filesystem::path& path);
 
-// ==== Given: the raw format and the file-backed mode (handout §8) =======================================
+// ==== Given: the raw format and the file-backed mode (handout §8) ==============================================
 
 //! The raw format (given): the grid's words as they are in memory (little-endian 64-bit words, voxel
 //! i + nx·(j + ny·k) is bit index mod 64 of word index / 64), then a 40-byte trailer: the 8 bytes "GLVOXRAW",
@@ -288,7 +288,7 @@ struct FileVoxels {
 FileVoxels voxelize_to_file(const PolygonSoup& mesh, const Dims& dims, bool solid, const std::filesystem::path& path,
                             int threads = 1, std::int64_t slab_layers = 32,
                             const std::function<void(std::int64_t, std::int64_t)>& progress = {});
-=======
+
 // ==== Task 7: voxelization through the graphics pipeline (handout §9) ========================================
 // Seed 002's method on OpenGL (OSMesa, software, headless): look along an axis with an orthographic camera, one
 // pixel per column of voxels; for layer k = 0, 1, ... draw the triangles' crossings of the depth slab
