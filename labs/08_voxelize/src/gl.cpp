@@ -1,4 +1,4 @@
-// Task 7: voxelization through the graphics pipeline (handout §8).
+// Task 7: voxelization through the graphics pipeline (handout §9).
 #include <algorithm>
 #include <array>
 #include <cmath>
