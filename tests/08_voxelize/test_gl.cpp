@@ -58,7 +58,7 @@ TEST_SUITE("Task 7: voxelization through the graphics pipeline") {
     }
 
     TEST_CASE("gl: slab_range: the slabs of the corners' depths; one more on each side; clamped to the grid" *
-              geolab::points(2) *
+              geolab::points(1) *
               geolab::hint("s(d) = max(0, ⌈d − ½⌉); first = max(0, s(d_min) − 1), last = min(n − 1, s(d_max) + 1); {0, −1} when "
                            "first > last")) {
         struct Case {
@@ -97,7 +97,7 @@ TEST_SUITE("Task 7: voxelization through the graphics pipeline") {
         CHECK_THROWS_AS(slab_range({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, d, 3), std::invalid_argument);
     }
 
-    TEST_CASE("gl: store_layer puts pixel (i; j) at voxel (u; v; axis) = (i; j; k)" * geolab::points(2) *
+    TEST_CASE("gl: store_layer puts pixel (i; j) at voxel (u; v; axis) = (i; j; k)" * geolab::points(1) *
               geolab::hint("pixel (i, j) is image[j·n_u + i]; set when non-zero, unset when 0; other layers untouched")) {
         Rng rng(808);
         for (Dims d : {Dims{3, 4, 5}, Dims{7, 1, 6}, Dims{16, 9, 2}}) {
@@ -184,7 +184,7 @@ TEST_SUITE("Task 7: voxelization through the graphics pipeline") {
         }
     }
 
-    TEST_CASE("gl: meshes below and across the grid: the virtual first slice fills whole columns" * geolab::points(2) *
+    TEST_CASE("gl: meshes below and across the grid: the virtual first slice fills whole columns" * geolab::points(1) *
               geolab::time_limit(60) *
               geolab::hint("slab 0 is (−∞, ½]: crossings below the grid flip whole columns; slab_range clamps to [0, n − 1]")) {
         std::list<PolygonSoup> keep;

@@ -30,7 +30,7 @@ BitGrid octahedron_solid(Dims d, glm::dvec3 c, double r) {
 }  // namespace
 
 TEST_SUITE("Task 4: solid voxelization") {
-    TEST_CASE("solid: parity along each axis fills boxes; centres on faces follow the perturbation" * geolab::points(3) *
+    TEST_CASE("solid: parity along each axis fills boxes; centres on faces follow the perturbation" * geolab::points(2) *
               geolab::hint("a voxel is set when the ray from its centre to −axis crosses an odd number of triangles; a "
                            "centre exactly on a face is decided by c + (ε, ε², ε³)")) {
         const Dims d{10, 10, 10};
@@ -45,7 +45,7 @@ TEST_SUITE("Task 4: solid voxelization") {
         // centres on faces: 4 layers each way, 64 voxels exactly
         CHECK(count_bits(box_solid(d, {1.5, 1.5, 1.5}, {5.5, 5.5, 5.5})) == 64);
     }
-    TEST_CASE("solid: rays through edges and vertices (octahedra with vertices at voxel centres)" * geolab::points(3) *
+    TEST_CASE("solid: rays through edges and vertices (octahedra with vertices at voxel centres)" * geolab::points(2) *
               geolab::hint("a ray through a shared edge or vertex must count exactly one crossing: decide orient2d = 0 "
                            "by the perturbation (simulation of simplicity), not by ≥ 0 or > 0")) {
         struct C {
@@ -60,7 +60,7 @@ TEST_SUITE("Task 4: solid voxelization") {
                            "octahedron centre " + str(c.c) + " r " + std::to_string(c.r) + ", axis " + std::to_string(axis));
     }
     TEST_CASE("solid: parity_fill_layers is that slab of parity_fill; along z the triangles below it count" *
-              geolab::points(3) *
+              geolab::points(2) *
               geolab::hint("voxel (i, j, k) of the whole grid is voxel (i, j, k − k0) of the layers; a ray along −z goes "
                            "on below layer k0 (and below the grid): every triangle under the slab flips its columns")) {
         const Dims d{10, 9, 12};
@@ -91,7 +91,7 @@ TEST_SUITE("Task 4: solid voxelization") {
         CHECK_THROWS_AS(parity_fill_layers(cube, {4, 4, 4}, 3, 0, 4, 1), std::invalid_argument);
         CHECK_THROWS_AS(parity_fill_layers(cube, {4, 4, 4}, 0, 0, 4, 0), std::invalid_argument);
     }
-    TEST_CASE("solid: tall grids and long rows (faces on many layer planes; 1; 2 and 4 threads)" * geolab::points(2) *
+    TEST_CASE("solid: tall grids and long rows (faces on many layer planes; 1; 2 and 4 threads)" * geolab::points(1) *
               geolab::hint("however the work is split, every column gets every flip, and the prefix XOR runs along the "
                            "whole column: across words, rows and layers")) {
         struct C {
@@ -112,7 +112,7 @@ TEST_SUITE("Task 4: solid voxelization") {
                 for (int t : {1, 2, 4})
                     check_grid(parity_fill(c.s, c.want.dims, axis, t), c.want, c.what + ", axis " + std::to_string(axis) + ", " + std::to_string(t) + " thread(s)");
     }
-    TEST_CASE("solid: a sphere's volume converges with resolution" * geolab::points(2) *
+    TEST_CASE("solid: a sphere's volume converges with resolution" * geolab::points(1) *
               geolab::hint("count · h³ → the enclosed volume; the error is about one layer of voxels, O(1/res)")) {
         double prev = 1e300;
         std::vector<PolygonSoup> keep;  // every mesh stays alive: the grader keys its digests by address and size
@@ -131,7 +131,7 @@ TEST_SUITE("Task 4: solid voxelization") {
         }
     }
     TEST_CASE("solid: the three axes agree voxel for voxel on every closed model of the course set (40³)" *
-              geolab::points(3) * geolab::time_limit(120) *
+              geolab::points(2) * geolab::time_limit(120) *
               geolab::hint("exact predicates plus the same perturbed point for all three axes: a closed mesh's parity "
                            "does not depend on the ray's direction")) {
         int closed = 0;
@@ -159,7 +159,7 @@ TEST_SUITE("Task 4: solid voxelization") {
         }
         CHECK_MESSAGE(closed >= 20, "test self-check: only " << closed << " closed models found in " << geolab::models_dir());
     }
-    TEST_CASE("solid: count_boundary_edges counts the edges of odd use" * geolab::points(2) *
+    TEST_CASE("solid: count_boundary_edges counts the edges of odd use" * geolab::points(1) *
               geolab::hint("fan-triangulate, merge exactly equal positions, count each undirected edge; odd = boundary")) {
         CHECK(count_boundary_edges(box_mesh({0, 0, 0}, {1, 1, 1})) == 0);
         PolygonSoup open = box_mesh({0, 0, 0}, {1, 1, 1});

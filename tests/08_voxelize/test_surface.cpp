@@ -22,7 +22,7 @@ BitGrid shell(Dims d, std::int64_t a, std::int64_t b) {
 }  // namespace
 
 TEST_SUITE("Task 3: surface voxelization") {
-    TEST_CASE("surface: a cube on voxel boundaries gets no extra layer" * geolab::points(3) *
+    TEST_CASE("surface: a cube on voxel boundaries gets no extra layer" * geolab::points(2) *
               geolab::hint("a face in the plane x = m belongs to the layer behind its normal only (Task 2's rule)")) {
         const Dims d{10, 10, 10};
         check_grid(voxelize_surface(box_mesh({2, 2, 2}, {6, 6, 6}), d, 1), shell(d, 2, 5), "outward cube [2, 6]³");
@@ -95,7 +95,7 @@ TEST_SUITE("Task 3: surface voxelization") {
         }
     }
     TEST_CASE("surface: triangles only an edge cross-product axis separates from a voxel of their box" *
-              geolab::points(2) *
+              geolab::points(1) *
               geolab::hint("Task 2's nine edge axes matter here too: a voxel of the bounding box that neither the box's "
                            "normals nor the triangle's normal separate may still be missed")) {
         // 64 such triangles, each near its own voxel (6·a, 6·b, 6·c) of a 24³ grid, in one soup
@@ -141,7 +141,7 @@ TEST_SUITE("Task 3: surface voxelization") {
             CHECK_THROWS_AS(voxelize_surface_layers(cube, {4, 4, 4}, k0, k1, 1), std::invalid_argument);
         }
     }
-    TEST_CASE("surface: tall grids and long rows (faces on many layer planes; 1; 2 and 4 threads)" * geolab::points(2) *
+    TEST_CASE("surface: tall grids and long rows (faces on many layer planes; 1; 2 and 4 threads)" * geolab::points(1) *
               geolab::hint("however the work is split (by triangles, rows or layers), every layer gets every voxel "
                            "of every triangle that belongs to it, and rows longer than a word are whole")) {
         struct C {
