@@ -1,6 +1,7 @@
 // Lab 05's data readers: Newell's .bpt patches and TrueType glyph outlines (FreeType's own decomposition).
 #include "geolab/bezier_data.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <string_view>
@@ -28,14 +29,11 @@ std::string quoted(std::string_view t) {
 // Whitespace-separated tokens of one line.
 std::vector<std::string_view> tokens_of(std::string_view line) {
     std::vector<std::string_view> out;
-    auto space = [](char c) { return c == ' ' || c == '\t' || c == '\f' || c == '\v'; };
-    std::size_t p = 0;
-    while (p < line.size()) {
-        while (p < line.size() && space(line[p])) ++p;
-        std::size_t e = p;
-        while (e < line.size() && !space(line[e])) ++e;
-        if (e > p) out.push_back(line.substr(p, e - p));
-        p = e;
+    constexpr std::string_view blanks = " \t\f\v";
+    for (std::size_t b = line.find_first_not_of(blanks); b != std::string_view::npos;) {
+        const std::size_t e = std::min(line.find_first_of(blanks, b), line.size());
+        out.push_back(line.substr(b, e - b));
+        b = line.find_first_not_of(blanks, e);
     }
     return out;
 }

@@ -1,9 +1,12 @@
 // Lab 01, Task 4: normals and areas (handout §6). Tolerances are relative to the size of the input. Meshes from
 // stored connectivity (stored.hpp), never from your build_mesh.
 #include "helpers.hpp"
+#include "geolab/grading/chain.hpp"
 
 using namespace lab01;
 
+// A vertex normal sums the faces around the vertex, which your Task 3 walks (one_ring_faces): its tests build on it
+// (geolab/grading/chain.hpp).
 TEST_SUITE("Task 4: geometry") {
     TEST_CASE("geometry: cube face normals are outward unit axes and areas are 4" * geolab::points(2) *
               geolab::hint("Newell: n = sum of p_i x p_(i+1) around the face; the face is counter-clockwise seen from "
@@ -60,6 +63,7 @@ TEST_SUITE("Task 4: geometry") {
     }
 
     TEST_CASE("geometry: icosphere vertex normals point along the position" * geolab::points(2) *
+              geolab::builds_on("Task 3") *
               geolab::hint("Sum the normals of the faces around v weighted by their areas, then normalize.")) {
         const PolygonSoup soup = fx::icosphere(2);
         const Mesh m = stored_mesh("icosphere(2)", soup);
@@ -73,7 +77,7 @@ TEST_SUITE("Task 4: geometry") {
         }
     }
 
-    TEST_CASE("geometry: vertex normals are weighted by face area" * geolab::points(2) *
+    TEST_CASE("geometry: vertex normals are weighted by face area" * geolab::points(2) * geolab::builds_on("Task 3") *
               geolab::hint("Add area(f) * normal(f), i.e. the Newell vectors, not the unit normals: a big face counts "
                            "more than a small one.")) {
         // Two triangles at vertex 0: (0, v1, v2) in z = 0 with cross (0,0,4) and (0, v2, v3) with cross (2,0,2).
@@ -101,7 +105,7 @@ TEST_SUITE("Task 4: geometry") {
     }
 
     TEST_CASE("geometry: a zero-area face and an isolated vertex have the zero normal and not NaN" *
-              geolab::points(2) *
+              geolab::points(2) * geolab::builds_on("Task 3") *
               geolab::hint("Normalize only a vector of positive length: return (0, 0, 0) when |n| = 0 (0 / 0 is NaN). "
                            "A face of zero area adds nothing to a vertex normal.")) {
         auto check_zero = [](const glm::dvec3& n, const std::string& what) {

@@ -1,6 +1,7 @@
 // Lab 01, Task 5: uniform Laplacian smoothing (handout §7). Meshes from stored connectivity (stored.hpp), never
 // from your build_mesh.
 #include "helpers.hpp"
+#include "geolab/grading/chain.hpp"
 
 using namespace lab01;
 
@@ -12,9 +13,11 @@ double max_distance(const std::vector<glm::dvec3>& a, const std::vector<glm::dve
 }
 }  // namespace
 
+// Smoothing averages each vertex's one-ring, which your Task 3 walks (one_ring_vertices): these tests build on it
+// (geolab/grading/chain.hpp).
 TEST_SUITE("Task 5: smoothing") {
     TEST_CASE("smoothing: one step on an octahedron with a raised top matches the hand computation" *
-              geolab::points(3) *
+              geolab::points(3) * geolab::builds_on("Task 3") *
               geolab::hint("Compute every L(v) from the OLD positions (keep a copy), then move: v + t (mean of the "
                            "neighbours - v). Moving vertices one by one in place gives different numbers.")) {
         // Vertices +-x (0, 1), +-y (2, 3), +-z (4, 5), all of valence 4; the top is raised to (0,0,2). With t = 1/2:
@@ -36,6 +39,7 @@ TEST_SUITE("Task 5: smoothing") {
     }
 
     TEST_CASE("smoothing: t = 0 changes nothing and bad arguments throw std::invalid_argument" * geolab::points(2) *
+              geolab::builds_on("Task 3") *
               geolab::hint("Check t in [0, 1] (NaN is not) and iterations >= 0 before anything else.")) {
         const PolygonSoup soup = fx::icosphere(1);
         Mesh m = stored_mesh("icosphere(1)", soup);
@@ -53,6 +57,7 @@ TEST_SUITE("Task 5: smoothing") {
 
     TEST_CASE(
         "smoothing: a jittered flat grid stays flat and its boundary does not move" * geolab::points(2) *
+        geolab::builds_on("Task 3") *
         geolab::hint("Skip boundary vertices (mesh.is_boundary(v)); each interior vertex moves toward the mean of "
                      "its neighbours.")) {
         PolygonSoup soup = fx::grid(6, 6);
@@ -73,7 +78,7 @@ TEST_SUITE("Task 5: smoothing") {
         }
     }
 
-    TEST_CASE("smoothing: a sphere keeps its centroid and shrinks" * geolab::points(2) *
+    TEST_CASE("smoothing: a sphere keeps its centroid and shrinks" * geolab::points(2) * geolab::builds_on("Task 3") *
               geolab::hint("Uniform Laplacian smoothing moves every vertex toward the mean of its neighbours: a closed "
                            "convex surface shrinks; a symmetric one keeps its centre.")) {
         const PolygonSoup soup = fx::icosphere(2);
@@ -99,7 +104,7 @@ TEST_SUITE("Task 5: smoothing") {
     }
 
     TEST_CASE("smoothing: t = 1 is allowed and moves every interior vertex onto the centroid of its neighbours" *
-              geolab::points(2) *
+              geolab::points(2) * geolab::builds_on("Task 3") *
               geolab::hint("t may be anything in [0, 1], both ends included: with t = 1, v + 1 (mean - v) = the mean of "
                            "the neighbours (old positions).")) {
         // The octahedron with its top raised to (0,0,2), t = 1: top and bottom go to the mean of the equator, 0;

@@ -129,6 +129,10 @@ TEST_SUITE("Task 1: build") {
             INFO(describe(f));
             const Mesh m = build_mesh(f.cells);
             require_valid(m, f.name);
+            // (relations of an empty mesh agree trivially: the mesh must be the fixture's)
+            REQUIRE_MESSAGE((m.n_cells() == f.cells.n_cells() && m.n_vertices() == f.cells.n_vertices()),
+                            "the mesh has " << m.n_cells() << " cells and " << m.n_vertices() << " vertices, the list "
+                                            << f.cells.n_cells() << " and " << f.cells.n_vertices());
             for_each_config(m, [&](const auto& x, const char* config) {
                 INFO("configuration: " << config);
                 for (HalfEdge h : m.halfedges()) {

@@ -1,5 +1,6 @@
 // Lab 02, Task 3: deletion and garbage collection (handout §5). Meshes from stored data (stored.hpp).
 #include "helpers.hpp"
+#include "geolab/grading/chain.hpp"
 
 using namespace lab02;
 
@@ -112,6 +113,7 @@ TEST_SUITE("Task 3: deletion and garbage collection") {
         Mesh m = stored_mesh("tet grid 3");
         for (std::uint32_t c : {5u, 17u, 40u, 41u, 100u}) {
             delete_cell(m, Cell{c});
+            REQUIRE_MESSAGE(m.is_deleted(Cell{c}), "c" << c << " is not deleted");
             for (Vertex v : m.vertices()) {
                 const auto expected = scan_halffaces(m, v);
                 REQUIRE_MESSAGE(m.vertex_halffaces(v) == expected,
@@ -215,11 +217,18 @@ TEST_SUITE("Task 3: deletion and garbage collection") {
         for (Edge e : m.edges()) m.set(pe, e, e.idx);
         for (HalfFace hf : m.halffaces()) m.set(phf, hf, hf.idx);
         for (HalfEdge h : m.halfedges()) m.set(ph, h, h.idx);
+        const std::size_t cells = m.n_cells(), vertices = m.n_vertices();
         delete_cell(m, Cell{1});
         delete_cell(m, Cell{6});
         delete_vertex(m, Vertex{0});
         const Remap r = garbage_collection(m);
         require_valid(m, "hex grid 2 after garbage collection");
+        // (an empty map moves nothing: it must cover every old element, and the deleted ones are gone)
+        REQUIRE_MESSAGE((r.cells.size() == cells && r.vertices.size() == vertices), "the maps must have one entry per old "
+                        "cell and vertex: " << r.cells.size() << " of " << cells << ", " << r.vertices.size() << " of " << vertices);
+        CHECK((r.cells[1] == geolab::halfface::invalid_index && r.cells[6] == geolab::halfface::invalid_index &&
+               r.vertices[0] == geolab::halfface::invalid_index));
+        CHECK(m.n_cells() < cells - 1);
         for (std::uint32_t i = 0; i < r.cells.size(); ++i)
             if (r.cells[i] != geolab::halfface::invalid_index)
                 REQUIRE_MESSAGE(m.get(pc, Cell{r.cells[i]}) == std::int32_t(i),

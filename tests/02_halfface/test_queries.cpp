@@ -132,6 +132,9 @@ TEST_SUITE("Task 2: queries") {
             for (Edge e : m.edges()) {
                 edge_cells(m, e, out);
                 const auto [a, b] = m.edge_vertices(e);
+                // (an empty list turns nowhere: it must hold the edge's cells)
+                REQUIRE_MESSAGE(out.size() == radial_cells(m, e).size(),
+                                e << ": " << out.size() << " cells listed, " << radial_cells(m, e).size() << " around it");
                 const glm::dvec3 pa = m.position(a), pb = m.position(b);
                 std::vector<double> ang;
                 for (Cell c : out) ang.push_back(angle_about(pa, pb, centroid(m, c)));

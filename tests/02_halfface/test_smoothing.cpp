@@ -3,6 +3,7 @@
 #include <limits>
 
 #include "helpers.hpp"
+#include "geolab/grading/chain.hpp"
 
 using namespace lab02;
 
@@ -54,6 +55,7 @@ double min_tet_volume(const Mesh& m) {
 
 TEST_SUITE("Task 4: smoothing") {
     TEST_CASE("smoothing: boundary vertices keep their positions bit for bit" * geolab::points(2) *
+              geolab::builds_on("Task 2") *
               geolab::hint("A vertex on any boundary half-face (no cell) never moves; do not even write p + 0.")) {
         for (const char* key : {"tet grid 3", "hex grid 2", "cube of 6 pyramids"}) {
             INFO("input: " << key);
@@ -67,9 +69,24 @@ TEST_SUITE("Task 4: smoothing") {
                                      std::bit_cast<std::array<std::uint64_t, 3>>(before.position(v))),
                                     v << " is on the boundary but moved");
         }
+        // (smoothing nothing keeps the boundary too): the interior vertex of hex grid 2, pushed off its rest place,
+        // comes back: 7 steps of t = 0.5 leave 1/128 of the push
+        Mesh m = stored_mesh("hex grid 2");
+        const auto bnd = boundary_vertices(m);
+        for (Vertex v : m.vertices()) {
+            if (bnd[v.idx]) continue;
+            const glm::dvec3 rest = m.position(v);
+            m.position(v) += glm::dvec3(0.1, -0.05, 0.08);
+            (void)volume_smoothing(m, 0.5, 7);
+            CHECK_MESSAGE(glm::length(m.position(v) - rest) < 0.01,
+                          "hex grid 2: the interior vertex pushed by 0.14 is still " << glm::length(m.position(v) - rest)
+                                                                                     << " from its rest after 7 steps");
+            break;
+        }
     }
 
     TEST_CASE("smoothing: one iteration is the Jacobi step v - t L(v) over edge neighbours" * geolab::points(2) *
+              geolab::builds_on("Task 2") *
               geolab::hint("L(v) = v - average of the edge neighbours, all from the old positions; apply them after "
                            "computing all of them.")) {
         for (double t : {0.25, 0.5, 1.0}) {
@@ -88,7 +105,7 @@ TEST_SUITE("Task 4: smoothing") {
     }
 
     TEST_CASE("smoothing: iterations converge (interior L(v) -> 0) and the reported minimum volume is right" *
-              geolab::points(2) *
+              geolab::points(2) * geolab::builds_on("Task 2") *
               geolab::hint("Return the minimum over tetrahedra of the signed volume after smoothing (positive when not "
                            "inverted).")) {
         Mesh m = stored_mesh("tet grid 3");
@@ -104,6 +121,7 @@ TEST_SUITE("Task 4: smoothing") {
     }
 
     TEST_CASE("smoothing: t outside 0..1 or negative iterations throw; t = 0 moves nothing" * geolab::points(1) *
+              geolab::builds_on("Task 2") *
               geolab::hint("std::invalid_argument for t < 0, t > 1, NaN or iterations < 0.")) {
         Mesh m = stored_mesh("tet grid 2");
         const Mesh before = m;
@@ -121,6 +139,7 @@ TEST_SUITE("Task 4: smoothing") {
     }
 
     TEST_CASE("smoothing: deleted cells and vertices / meshes without tetrahedra" * geolab::points(2) *
+              geolab::builds_on("Task 2") *
               geolab::hint("Only alive tetrahedra count for the minimum volume (+infinity when there is none); a vertex "
                            "marked deleted is not interior and keeps its position.")) {
         // the tet of smallest volume deleted (through the kernel): it no longer counts

@@ -1,10 +1,12 @@
 // Lab 02, Task 5: the boundary surface (handout §7). Meshes from stored data (stored.hpp).
 #include "helpers.hpp"
+#include "geolab/grading/chain.hpp"
 
 using namespace lab02;
 
 TEST_SUITE("Task 5: boundary surface") {
     TEST_CASE("surface: a single tetrahedron gives 4 outward triangles" * geolab::points(2) *
+              geolab::builds_on("Task 2") *
               geolab::hint("One polygon per boundary half-face, its vertices reversed (the cell is on the other side).")) {
         const Mesh m = stored_mesh("single tet");
         const PolygonSoup s = boundary_surface(m);
@@ -15,7 +17,7 @@ TEST_SUITE("Task 5: boundary surface") {
     }
 
     TEST_CASE("surface: every fixture's surface is closed / outward / a sphere / and encloses the cells' volume" *
-              geolab::points(2) *
+              geolab::points(2) * geolab::builds_on("Task 2") *
               geolab::hint("Reverse each boundary half-face's loop; renumber the used vertices in increasing order.")) {
         for (const Fixture& f : stored_fixtures()) {
             INFO(describe(f));
@@ -34,6 +36,7 @@ TEST_SUITE("Task 5: boundary surface") {
     }
 
     TEST_CASE("surface: faces in half-face order / vertices renumbered in increasing mesh order" * geolab::points(2) *
+              geolab::builds_on("Task 2") *
               geolab::hint("Polygon i is the i-th boundary half-face; soup vertex j is the j-th used mesh vertex.")) {
         for (const Fixture& f : stored_fixtures()) {
             INFO(describe(f));
@@ -65,6 +68,7 @@ TEST_SUITE("Task 5: boundary surface") {
     }
 
     TEST_CASE("surface: after deleting cells the surface is still closed and outward" * geolab::points(3) *
+              geolab::builds_on("Task 2") *
               geolab::hint("Skip deleted half-faces; a face whose cell was deleted is boundary on the other side now.")) {
         const CellList cl = fx::tet_grid(3, 0.3);
         // a corner cube removed (still a ball), then the centre cube removed (a ball with a cavity)

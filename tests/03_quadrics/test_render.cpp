@@ -1,5 +1,6 @@
 // Lab 03, Task 7: images. Expected pixels from the ray–sphere distance computed here (the camera's rays are given code).
 #include "helpers.hpp"
+#include "geolab/grading/chain.hpp"
 
 using namespace lab03;
 
@@ -43,6 +44,7 @@ int check_sphere_image(const geolab::render::Image& img, const PinholeCamera& ca
 
 TEST_SUITE("Task 7: images") {
     TEST_CASE("images: a quadric sphere in a box; Lambert-shaded; pixel by pixel" * geolab::points(2) *
+              geolab::builds_on("Task 4") *
               geolab::hint("One ray per pixel from camera.ray(x, y, w, h); the first hit of intersect_in_box; v = 0.1 + "
                            "0.9·|n·l| with l normalized; round(255 v) in R, G, B; alpha 255; a miss is 0.")) {
         const PinholeCamera cam{{0.5, 1, 6}, {0, 0, 0}, {0, 1, 0}, 35};
@@ -66,6 +68,7 @@ TEST_SUITE("Task 7: images") {
     }
 
     TEST_CASE("images: a superquadric (ε = 1: an ellipsoid of equal radii) renders the same sphere" * geolab::points(2) *
+              geolab::builds_on("Task 5") *
               geolab::hint("For a superquadric scene use intersect_superquadric from t = 0; the shading is the same.")) {
         const PinholeCamera cam{{-2, 3, 5}, {0, 0, 0}, {0, 1, 0}, 30};
         Scene scene;

@@ -1,11 +1,12 @@
 // Lab 03, Task 6: tessellation. Closedness, orientation, χ and volume are measured here on the returned soup.
 #include "helpers.hpp"
+#include "geolab/grading/chain.hpp"
 
 using namespace lab03;
 
 TEST_SUITE("Task 6: tessellation") {
     TEST_CASE("tessellation: the superquadric mesh is closed; outward; χ = 2; with its vertices on the surface" *
-              geolab::points(3) *
+              geolab::points(3) * geolab::builds_on("Task 5") *
               geolab::hint("Vertex 0 = south pole, 1 = north pole, then the rings; fans at the poles, two triangles per "
                            "quad; wrap ω around (j + 1) % n_omega. Counter-clockwise seen from outside.")) {
         for (auto [e1, e2, ne, no] : {std::tuple{1.0, 1.0, 8, 12}, std::tuple{0.3, 0.3, 5, 3}, std::tuple{2.0, 2.0, 2, 4},
@@ -44,6 +45,7 @@ TEST_SUITE("Task 6: tessellation") {
     }
 
     TEST_CASE("tessellation: the mesh volume converges to the exact one at second order" * geolab::points(2) *
+              geolab::builds_on("Task 5") *
               geolab::hint("An inscribed mesh on an (η, ω) grid with spacing h misses O(h²) of the volume: doubling the "
                            "resolution divides the error by about 4. Use the formulas of §7, not another angle range.")) {
         for (const Superquadric& s : {Superquadric{{1, 1, 1}, 1, 1}, Superquadric{{2, 1, 0.5}, 1, 1},

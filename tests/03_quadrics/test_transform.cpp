@@ -8,6 +8,8 @@ namespace {
 void check_points_follow(QuadricType t, double a, double b, double c, const Mat4L& M, const glm::dmat4& got, Rng& rng,
                          const std::string& what) {
     const double qn = max_abs(got);
+    // (every point lies on the zero matrix: the transformed quadric must be one)
+    CHECK_MESSAGE(qn > 0, what << ": the transformed " << type_name(t) << " is the zero matrix");
     for (int n = 0; n < 12; ++n) {
         glm::dvec3 p;
         if (!canonical_point(t, a, b, c, rng.uniform(0, 1), rng.uniform(0, 1), p)) return;

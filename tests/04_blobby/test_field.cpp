@@ -1,5 +1,6 @@
 // Lab 04, Task 2: the field F = T − Σ D and its gradient. Expected values: sums in long double (helpers.hpp).
 #include "helpers.hpp"
+#include "geolab/grading/chain.hpp"
 
 using namespace lab04;
 
@@ -18,7 +19,7 @@ BlobScene two_blinn(double d) {
 }  // namespace
 
 TEST_SUITE("Task 2: the field") {
-    TEST_CASE("field: one blob gives T − D(r); negative inside" * geolab::points(2) *
+    TEST_CASE("field: one blob gives T − D(r); negative inside" * geolab::points(2) * geolab::builds_on("Task 1") *
               geolab::hint("value = threshold − Σ density(kernel, blob, |p − centre|): NEGATIVE inside.")) {
         for (Kernel k : kernels) {
             BlobScene s;
@@ -42,7 +43,8 @@ TEST_SUITE("Task 2: the field") {
         }
     }
 
-    TEST_CASE("field: sums every blob (random scenes of each kernel; negative blobs among them)" * geolab::points(3)) {
+    TEST_CASE("field: sums every blob (random scenes of each kernel; negative blobs among them)" * geolab::points(3) *
+              geolab::builds_on("Task 1")) {
         Rng rng(51);
         for (Kernel k : kernels)
             for (int n = 0; n < 10; ++n) {
@@ -57,6 +59,7 @@ TEST_SUITE("Task 2: the field") {
     }
 
     TEST_CASE("field: the gradient is ∇F (analytic; checked against finite differences of F)" * geolab::points(3) *
+              geolab::builds_on("Task 1") *
               geolab::hint("∇F = −Σ D'(rᵢ) (p − cᵢ)/rᵢ: mind the sign (F = T − Σ D) and skip a blob with rᵢ = 0.")) {
         Rng rng(52);
         for (Kernel k : kernels)
@@ -82,6 +85,7 @@ TEST_SUITE("Task 2: the field") {
     }
 
     TEST_CASE("field: two Blinn blobs (a = b = 1; T = 0.5) merge exactly when d ≤ 2√ln4 = 2.35482" * geolab::points(2) *
+              geolab::builds_on("Task 1") *
               geolab::hint("At the midpoint F = 0.5 − 2 exp(−d²/4): it is 0 at d = 2√(ln 4).")) {
         for (double d : {2.0, 2.3, 2.354, 2.356, 2.4, 3.0}) {
             const BlobScene s = two_blinn(d);
@@ -95,7 +99,8 @@ TEST_SUITE("Task 2: the field") {
         CHECK_MESSAGE(std::abs(v) < 1e-14, "at d = 2√ln4 the midpoint is on the surface: F = " << v);
     }
 
-    TEST_CASE("field: a negative blob subtracts and can carve a hole" * geolab::points(2)) {
+    TEST_CASE("field: a negative blob subtracts and can carve a hole" * geolab::points(2) *
+              geolab::builds_on("Task 1")) {
         for (Kernel k : kernels) {
             BlobScene s;
             s.kernel = k;
@@ -118,6 +123,7 @@ TEST_SUITE("Task 2: the field") {
     }
 
     TEST_CASE("field: bad blobs throw std::invalid_argument naming the blob" * geolab::points(2) *
+              geolab::builds_on("Task 1") *
               geolab::hint("Let density's exception through, with the blob's index in the message (\"blob 2: ...\").")) {
         for (Kernel k : kernels) {
             BlobScene s;

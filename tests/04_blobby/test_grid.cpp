@@ -2,6 +2,7 @@
 // blobs; expected values from the sums in long double (helpers.hpp); kernel evaluations counted by your code and
 // bounded by what the grid allows.
 #include "helpers.hpp"
+#include "geolab/grading/chain.hpp"
 
 using namespace lab04;
 
@@ -32,7 +33,7 @@ BlobScene spread_scene(Rng& rng, Kernel k, int n, double R) {
 
 TEST_SUITE("Task 3: fast evaluation") {
     TEST_CASE("grid: each cell lists every blob whose support reaches it; in increasing order; and no far blob" *
-              geolab::points(3) *
+              geolab::points(3) * geolab::builds_on("Task 1") *
               geolab::hint("Put each blob in every cell its box [c − R, c + R]³ overlaps; a blob in the wrong cell or "
                            "with a too-small box (support radius off) loses samples.")) {
         Rng rng(61);
@@ -49,6 +50,14 @@ TEST_SUITE("Task 3: fast evaluation") {
                 REQUIRE_MESSAGE(g.cell_start.size() == std::size_t(g.dims.x) * g.dims.y * g.dims.z + 1,
                                 "cell_start must have one entry per cell plus one");
                 REQUIRE(g.cell_start.back() == g.blob_ids.size());
+                // (an empty grid lists nothing wrongly): the cell of each blob's centre lists that blob
+                for (std::uint32_t b = 0; b < s.blobs.size(); ++b) {
+                    const glm::ivec3 at = glm::ivec3(glm::floor((s.blobs[b].center - g.origin) / g.cell));
+                    const bool in_grid = glm::all(glm::greaterThanEqual(at, glm::ivec3(0))) && glm::all(glm::lessThan(at, g.dims));
+                    REQUIRE_MESSAGE(in_grid, str(s) << ": blob " << b << "'s centre is outside the grid");
+                    const auto L = list_of(g, at.x + std::size_t(g.dims.x) * (at.y + std::size_t(g.dims.y) * at.z));
+                    CHECK_MESSAGE(std::find(L.begin(), L.end(), b) != L.end(), str(s) << ": blob " << b << " is not listed in the cell of its centre");
+                }
                 for (int kk = 0; kk < g.dims.z; ++kk)
                     for (int j = 0; j < g.dims.y; ++j)
                         for (int i = 0; i < g.dims.x; ++i) {
@@ -76,7 +85,8 @@ TEST_SUITE("Task 3: fast evaluation") {
             }
     }
 
-    TEST_CASE("grid: origin; cell and dims cover the union of the supports; blinn and empty scenes" * geolab::points(2)) {
+    TEST_CASE("grid: origin; cell and dims cover the union of the supports; blinn and empty scenes" * geolab::points(2) *
+              geolab::builds_on("Task 1")) {
         Rng rng(62);
         const BlobScene s = random_scene(rng, Kernel::wyvill, 9);
         glm::dvec3 lo(1e300), hi(-1e300);
@@ -116,6 +126,7 @@ TEST_SUITE("Task 3: fast evaluation") {
     }
 
     TEST_CASE("grid: evaluate equals field everywhere; inside and outside the grid" * geolab::points(2) *
+              geolab::builds_on("Task 1") *
               geolab::hint("Find p's cell by floor((p − origin)/cell); outside the grid F = T, ∇F = 0.")) {
         Rng rng(63);
         for (Kernel k : {Kernel::nishimura, Kernel::wyvill})
@@ -150,6 +161,7 @@ TEST_SUITE("Task 3: fast evaluation") {
     }
 
     TEST_CASE("grid: evaluate with large blobs (R from 1.2 to 3.2): every blob that reaches p counts" * geolab::points(1) *
+              geolab::builds_on("Task 1") *
               geolab::hint("Skipping a listed blob must depend on its own R (a blob contributes 0 from r = R on), not on a "
                            "fixed distance.")) {
         Rng rng(67);
@@ -171,6 +183,7 @@ TEST_SUITE("Task 3: fast evaluation") {
     }
 
     TEST_CASE("grid: kernel evaluations per sample do not grow with the number of blobs" * geolab::points(3) *
+              geolab::builds_on("Task 1") *
               geolab::hint("Count one evaluation per blob of p's cell. With the grid, a sample only sees the blobs "
                            "whose support box overlaps its cell.")) {
         const double R = 0.3;
@@ -209,7 +222,7 @@ TEST_SUITE("Task 3: fast evaluation") {
     }
 
     TEST_CASE("grid: sample_lattice gives F and ∇F at every lattice point; and the total evaluations" *
-              geolab::points(3)) {
+              geolab::points(3) * geolab::builds_on("Task 1, Task 2")) {
         Rng rng(65);
         for (Kernel k : {Kernel::blinn, Kernel::nishimura, Kernel::wyvill}) {
             const BlobScene s = random_scene(rng, k, 8);
@@ -255,7 +268,8 @@ TEST_SUITE("Task 3: fast evaluation") {
         }
     }
 
-    TEST_CASE("grid: bad lattices and cells throw std::invalid_argument" * geolab::points(2)) {
+    TEST_CASE("grid: bad lattices and cells throw std::invalid_argument" * geolab::points(2) *
+              geolab::builds_on("Task 1")) {
         Rng rng(66);
         const BlobScene s = random_scene(rng, Kernel::wyvill, 3);
         std::uint64_t e = 0;

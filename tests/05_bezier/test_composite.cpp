@@ -1,6 +1,7 @@
 // Lab 05, Task 4: composite curves and continuity at a joint. Joints built by construction (the class known), the
 // derivatives for checks from the Bernstein form in long double.
 #include "helpers.hpp"
+#include "geolab/grading/chain.hpp"
 
 using namespace lab05;
 
@@ -23,7 +24,7 @@ std::string str(const Continuity& c) {
 
 TEST_SUITE("Task 4: composite curves") {
     TEST_CASE("composite evaluation: segment k covers (k; k + 1); an inner joint belongs to the next segment" *
-              geolab::points(2) *
+              geolab::points(2) * geolab::builds_on("Task 1") *
               geolab::hint("k = floor(u) clamped to the last segment; t = u − k. u outside [0, m]: invalid_argument.")) {
         const std::vector<Poly3> segs{{{0, 0, 0}, {1, 0, 0}}, {{5, 5, 5}, {6, 6, 6}, {7, 5, 5}}, {{9, 9, 9}, {10, 8, 8}}};
         CHECK(evaluate_composite(segs, 0.0) == glm::dvec3(0, 0, 0));
@@ -48,6 +49,7 @@ TEST_SUITE("Task 4: composite curves") {
     }
 
     TEST_CASE("continuity classes: C⁰ only; G¹ but not C¹; C¹; G² but not C²; C²; C³; apart" * geolab::points(4) *
+              geolab::builds_on("Task 2") *
               geolab::hint("Cᵏ: derivatives 0..k equal. Gᵏ (lecture): Cᵏ⁻¹ plus k-th derivatives parallel in the same "
                            "direction. G¹ is NOT C¹: a tangent of another length is still G¹ (handout §5).")) {
         struct Case {
@@ -92,7 +94,7 @@ TEST_SUITE("Task 4: composite curves") {
         CHECK(gs.g_order == 1);
     }
 
-    TEST_CASE("continuity with different degrees and a tolerance" * geolab::points(2) *
+    TEST_CASE("continuity with different degrees and a tolerance" * geolab::points(2) * geolab::builds_on("Task 2") *
               geolab::hint("Derivatives at the joint come from each curve's own degree: a'(1) = n (a_n − a_(n−1)), "
                            "b'(0) = m (b_1 − b_0).")) {
         // quadratic b joined C¹ to cubic A: b1 = A3 + (3/2)(A3 − A2)

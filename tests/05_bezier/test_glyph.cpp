@@ -1,6 +1,7 @@
 // Lab 05, Task 7: glyph outlines (DejaVu Sans through lib's FreeType reader). Expected areas: closed forms and
 // the shoelace area of finely sampled outlines in long double; flattening checked against the curve itself.
 #include "helpers.hpp"
+#include "geolab/grading/chain.hpp"
 
 using namespace lab05;
 
@@ -37,7 +38,7 @@ TEST_SUITE("Task 7: glyphs") {
     }
 
     TEST_CASE("flatten: the prescribed uniform steps per segment; every chord within tol of the curve" *
-              geolab::points(2) *
+              geolab::points(2) * geolab::builds_on("Task 1") *
               geolab::hint("m = max(1, ceil(sqrt(|P0 − 2P1 + P2| / (4 tol)))) steps per segment; the points C(k/m) for "
                            "k = 0..m−1 (the next segment starts where this one ends).")) {
         for (char32_t ch : {U'S', U'g', U'@'}) {

@@ -2,6 +2,7 @@
 // forms, composite Simpson (split at a cusp), the contract's adaptive rule and dense sampling refined by
 // golden-section search, all in long double (helpers.hpp).
 #include "helpers.hpp"
+#include "geolab/grading/chain.hpp"
 
 using namespace lab05;
 
@@ -41,7 +42,7 @@ std::vector<Cusp> cusps() {
 
 TEST_SUITE("Task 3: measures") {
     TEST_CASE("arc length: a straight cubic; the parabola y = x²; and random curves to the requested tolerance" *
-              geolab::points(3) *
+              geolab::points(3) * geolab::builds_on("Task 1, Task 2") *
               geolab::hint("Integrate |C'| by Gauss–Legendre mapped to [a, b]; halve intervals where the 5- and "
                            "10-point rules disagree by more than their share of tol (handout §4).")) {
         const Poly3 line{{0, 0, 0}, {3, 0, 0}, {3, 0, 0}, {4, 0, 0}};  // x(t) non-uniform but monotone: length 4
@@ -83,6 +84,7 @@ TEST_SUITE("Task 3: measures") {
     TEST_CASE("arc length: the contract's rule (cut at the speed's stationary points; shares of tol); tol below "
               "rounding; |C'| not finite" *
               geolab::points(2) *
+              geolab::builds_on("Task 1, Task 2") *
               geolab::hint("Cut [a, b] at the roots of C' · C'' (the speed's extremes; a cusp is one). On each piece keep "
                            "an interval when its 5- and 10-point values differ by at most tol · (its length) / (b − a); "
                            "otherwise halve it. Refuse a hodograph point whose length is not finite (handout §4).")) {
@@ -124,6 +126,7 @@ TEST_SUITE("Task 3: measures") {
     }
 
     TEST_CASE("parameter at length: the inverse of the arc length" * geolab::points(3) *
+              geolab::builds_on("Task 1, Task 2") *
               geolab::hint("Solve length(0, t) = s: Newton (the derivative is |C'(t)|) inside a bracket, bisecting "
                            "when Newton leaves it.")) {
         const Poly3 line{{0, 0, 0}, {3, 0, 0}, {3, 0, 0}, {4, 0, 0}};  // x(t) = 9t − 9t² ... ; length to x is x
@@ -177,7 +180,7 @@ TEST_SUITE("Task 3: measures") {
     }
 
     TEST_CASE("bounding box: tight (the extremes of each coordinate) and inside the control points' box" *
-              geolab::points(3) *
+              geolab::points(3) * geolab::builds_on("Task 1, Task 2") *
               geolab::hint("Per axis: the ends and C at the roots in (0, 1) of that coordinate of C'. The control "
                            "points' box is only an upper bound (convex hull property), not the answer.")) {
         const Poly3 parabola{{-1, 1, 0}, {0, -1, 0}, {1, 1, 0}};
@@ -220,6 +223,7 @@ TEST_SUITE("Task 3: measures") {
     }
 
     TEST_CASE("closest point: the global minimum; at the ends too" * geolab::points(3) *
+              geolab::builds_on("Task 1, Task 2") *
               geolab::hint("Bracket candidates (sampling or subdivision), refine each by Newton on (C − q)·C' = 0 "
                            "clamped to [0, 1], and compare with both ends: a local minimum is not enough.")) {
         const Poly3 parabola{{-1, 1, 0}, {0, -1, 0}, {1, 1, 0}};

@@ -1,6 +1,7 @@
 // Lab 05, Task 2: subdivision, restriction, hodograph, derivatives, elevation, curvature and torsion. Expected
 // values from the Bernstein form and its derivatives in long double (helpers.hpp).
 #include "helpers.hpp"
+#include "geolab/grading/chain.hpp"
 
 using namespace lab05;
 
@@ -59,7 +60,7 @@ TEST_SUITE("Task 2: operations") {
                              doctest::Contains("restrict_to"), std::invalid_argument);
     }
 
-    TEST_CASE("hodograph: n (P_(k+1) − P_k); and C'(t) from it" * geolab::points(3) *
+    TEST_CASE("hodograph: n (P_(k+1) − P_k); and C'(t) from it" * geolab::points(3) * geolab::builds_on("Task 1") *
               geolab::hint("The derivative of a degree-n Bézier curve is a degree n − 1 curve with control points "
                            "n (P_(k+1) − P_k): do not forget the factor n (handout §3).")) {
         const Poly3 cubic{{0, 0, 0}, {1, 2, 0}, {3, 3, 1}, {4, 0, 2}};
@@ -84,6 +85,7 @@ TEST_SUITE("Task 2: operations") {
     }
 
     TEST_CASE("second derivative: C''(t) = n (n − 1) Σ Δ²P_k B_k^(n−2)(t)" * geolab::points(1) *
+              geolab::builds_on("Task 1") *
               geolab::hint("The hodograph of the hodograph. A line (n = 1) has C'' = 0.")) {
         Rng rng(13);
         for (int n = 1; n <= 9; ++n)
@@ -120,6 +122,7 @@ TEST_SUITE("Task 2: operations") {
     }
 
     TEST_CASE("curvature; torsion and signed curvature against the derivatives' formulas" * geolab::points(3) *
+              geolab::builds_on("Task 1") *
               geolab::hint("κ = |C' × C''| / |C'|³, τ = (C' × C'') · C''' / |C' × C''|², signed κ = (x'y'' − y'x'') "
                            "/ |C'|³: positive turning left.")) {
         // y = x² on [−1, 1]: κ = 2 at the vertex, turning left

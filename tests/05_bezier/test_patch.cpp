@@ -1,6 +1,7 @@
 // Lab 05, Tasks 5 and 6: tensor-product patches and the Utah teapot. Expected values from the tensor-product
 // Bernstein form in long double (helpers.hpp); the teapot from lib's reader of data/teapot.bpt.
 #include "helpers.hpp"
+#include "geolab/grading/chain.hpp"
 
 using namespace lab05;
 
@@ -19,7 +20,7 @@ BezierPatch cap() {
 
 TEST_SUITE("Task 5: tensor-product patches") {
     TEST_CASE("patch point: Σ B_i(u) B_j(v) P_ij with i along u; j along v; for degrees 1..4 × 1..4" *
-              geolab::points(2) *
+              geolab::points(2) * geolab::builds_on("Task 1") *
               geolab::hint("P_ij = points[i (degree_v + 1) + j]; de Casteljau in u on each column j (P_0j .. P_nj), "
                            "then in v on the results. A 2 × 3 patch tells u from v.")) {
         Rng rng(40);
@@ -46,7 +47,7 @@ TEST_SUITE("Task 5: tensor-product patches") {
         CHECK_THROWS_AS(patch_dv(flat_v, 0.5, 0.5), std::invalid_argument);
     }
 
-    TEST_CASE("patch derivatives: S_u and S_v" * geolab::points(2) *
+    TEST_CASE("patch derivatives: S_u and S_v" * geolab::points(2) * geolab::builds_on("Task 1, Task 2") *
               geolab::hint("S_u: the u-derivative of each column's curve, then de Casteljau in v; S_v: the points of "
                            "the columns at u, then the derivative of that curve in v.")) {
         Rng rng(41);
@@ -65,6 +66,7 @@ TEST_SUITE("Task 5: tensor-product patches") {
     }
 
     TEST_CASE("patch normal: unit; along S_u × S_v; the limit at a collapsed edge" * geolab::points(2) *
+              geolab::builds_on("Task 1, Task 2") *
               geolab::hint("Where S_u × S_v = 0 (a collapsed edge) take the limit moving into the patch: the first-"
                            "order term, or a point moved slightly inside (handout §6). Never NaN.")) {
         Rng rng(42);
@@ -140,6 +142,7 @@ TEST_SUITE("Task 5: tensor-product patches") {
     TEST_CASE("patch normal where S_u × S_v counts as 0: the threshold; the first-order term with S_uu and S_vv; "
               "σ at ½; the 1e-6 step; a point patch" *
               geolab::points(2) *
+              geolab::builds_on("Task 1, Task 2") *
               geolab::hint("|S_u × S_v| ≤ 1e-12 (|S_u| + |S_v|)² counts as 0. Then the direction of (σ_u S_uu + σ_v S_uv) × "
                            "S_v + S_u × (σ_u S_uv + σ_v S_vv), σ = +1 for a parameter ≤ ½, else −1; if that is exactly 0, "
                            "the normal at (u + σ_u 1e-6, v + σ_v 1e-6); if that is 0 too, (0, 0, 1) (handout §6).")) {
@@ -216,6 +219,7 @@ TEST_SUITE("Task 5: tensor-product patches") {
 
     TEST_CASE("tessellation: vertex order; the weld rule (earliest border vertex within weld_tol); collapsed edges" *
               geolab::points(2) *
+              geolab::builds_on("Task 1, Task 2") *
               geolab::hint("Patches in order, samples i-major. A border sample within weld_tol (distance ≤ weld_tol) of "
                            "an earlier border vertex IS the earliest such vertex; interior samples are always new. "
                            "Drop a triangle with two equal vertices (handout §6).")) {
@@ -277,6 +281,7 @@ TEST_SUITE("Task 5: tensor-product patches") {
 
     TEST_CASE("tessellation: (n + 1)² samples per patch; 2n² triangles turning like S_u × S_v; borders shared" *
               geolab::points(2) *
+              geolab::builds_on("Task 1") *
               geolab::hint("Triangles (i,j)(i+1,j)(i+1,j+1) and (i,j)(i+1,j+1)(i,j+1); weld only border samples closer "
                            "than weld_tol; flip reverses triangles and normals.")) {
         Rng rng(43);
@@ -367,7 +372,7 @@ TEST_SUITE("Task 5: tensor-product patches") {
 }
 
 TEST_SUITE("Task 6: the Utah teapot") {
-    TEST_CASE("teapot: shared patch edges agree within 1e-12" * geolab::points(2) *
+    TEST_CASE("teapot: shared patch edges agree within 1e-12" * geolab::points(2) * geolab::builds_on("Task 1") *
               geolab::hint("Neighbouring patches share their border control points; your patch_point must give the "
                            "same points along the shared border.")) {
         const auto& T = teapot();
@@ -391,6 +396,12 @@ TEST_SUITE("Task 6: the Utah teapot") {
             const double u = b.kind == 0 ? 0 : b.kind == 1 ? 1 : s, v = b.kind == 2 ? 0 : b.kind == 3 ? 1 : s;
             return patch_point(T[b.patch], u, v);
         };
+        // (points that agree because they are all the same prove nothing): a patch passes through its corners
+        for (int p = 0; p < 32; ++p) {
+            const glm::dvec3 c = patch_point(T[p], 0, 0);
+            CHECK_MESSAGE(glm::length(c - T[p].points[0]) <= 1e-12, "patch " << p << " at (0, 0): expected its corner "
+                                                                            << str(T[p].points[0]) << ", got " << str(c));
+        }
         int shared = 0;
         for (std::size_t a = 0; a < borders.size(); ++a)
             for (std::size_t b = a + 1; b < borders.size(); ++b) {
@@ -415,6 +426,7 @@ TEST_SUITE("Task 6: the Utah teapot") {
     }
 
     TEST_CASE("teapot: normals everywhere; vertical at the lid's top and the bottom's centre" * geolab::points(2) *
+              geolab::builds_on("Task 1, Task 2") *
               geolab::hint("Patches 20–23 (lid) and 28–31 (bottom) collapse their u = 0 edge to one point: S_u × S_v "
                            "= 0 there. The normal is the limit from inside the patch.")) {
         const auto& T = teapot();
@@ -438,7 +450,7 @@ TEST_SUITE("Task 6: the Utah teapot") {
     }
 
     TEST_CASE("teapot: samples inside each patch's convex hull; the body's normals point in (file order)" *
-              geolab::points(2) *
+              geolab::points(2) * geolab::builds_on("Task 1") *
               geolab::hint("S_u × S_v of the file's patches points into the teapot; tessellate with flip = true for "
                            "outward normals.")) {
         const auto& T = teapot();

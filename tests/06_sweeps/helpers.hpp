@@ -375,6 +375,32 @@ inline glm::dvec3 reflect_step(glm::dvec3 x0, glm::dvec3 t0, glm::dvec3 r0, glm:
     return c2 == 0 ? rl : rl - (2 / c2) * glm::dot(v2, rl) * v2;
 }
 
+// Rotation-minimizing frames made here, for the sweep tests (Task 6 must not depend on your Task 5): double
+// reflection from N₀ = initial_normal made orthogonal to T₀; a closed path's closing angle is then spread along the
+// arc length, frame i turned about Tᵢ by −mismatch·sᵢ/L, as the contract of rotation_minimizing_frames says.
+inline std::vector<Frame> rmf_frames(const Path& p, glm::dvec3 initial_normal) {
+    const std::size_t n = p.points.size();
+    std::vector<Frame> f(n);
+    glm::dvec3 r = initial_normal - glm::dot(initial_normal, p.tangents[0]) * p.tangents[0];
+    r = glm::normalize(r);
+    for (std::size_t i = 0; i < n; ++i) {
+        if (i > 0) r = glm::normalize(reflect_step(p.points[i - 1], p.tangents[i - 1], r, p.points[i], p.tangents[i]));
+        f[i] = {p.tangents[i], r, glm::cross(p.tangents[i], r)};
+    }
+    if (!p.closed) return f;
+    const glm::dvec3 back = reflect_step(p.points[n - 1], p.tangents[n - 1], f[n - 1].N, p.points[0], p.tangents[0]);
+    const double mismatch = angle_about(f[0].N, back, p.tangents[0]);
+    std::vector<double> s(n, 0.0);
+    for (std::size_t i = 1; i < n; ++i) s[i] = s[i - 1] + glm::length(p.points[i] - p.points[i - 1]);
+    const double L = s[n - 1] + glm::length(p.points[0] - p.points[n - 1]);
+    for (std::size_t i = 0; i < n; ++i) {
+        const double a = -mismatch * s[i] / L;
+        const glm::dvec3 N = std::cos(a) * f[i].N + std::sin(a) * f[i].B;
+        f[i] = {f[i].T, N, glm::cross(f[i].T, N)};
+    }
+    return f;
+}
+
 // A frame's problems: not orthonormal or not right-handed (tolerance tol).
 inline std::string frame_problem(const Frame& f, double tol = 1e-9) {
     std::string w;

@@ -1,6 +1,7 @@
 // Lab 06, Task 3: extrusion. Expected values: closed forms (prism V = A·h, frustum V = A·h·(1 + s + s²)/3, areas),
 // the vertex layout formula, and lib's check_surface for closedness, orientation and genus.
 #include "helpers.hpp"
+#include "geolab/grading/chain.hpp"
 
 using namespace lab06;
 
@@ -13,6 +14,7 @@ glm::dvec3 layer_point(glm::dvec2 q, const ExtrudeOptions& o, int k) {
 
 TEST_SUITE("Task 3: extrusion") {
     TEST_CASE("extrude: the 4×4 square with a 2×2 hole; height 1: V = 12; A = 48; closed; genus 1" * geolab::points(3) *
+              geolab::builds_on("Task 1, Task 2") *
               geolab::hint("Side walls: two triangles per loop edge a→b and step, (a₀, b₀, b₁) and (a₀, b₁, a₁); caps from "
                            "triangulate, the bottom one reversed (handout §4).")) {
         const Profile p = square_with_hole();
@@ -28,6 +30,7 @@ TEST_SUITE("Task 3: extrusion") {
     }
 
     TEST_CASE("extrude: vertices layer by layer; scaled; turned and moved as the contract says" * geolab::points(2) *
+              geolab::builds_on("Task 1, Task 2") *
               geolab::hint("Layer k at s = k/steps: scale by 1 + s(scale − 1), turn by s·twist about z, then add "
                            "s·direction; profile_points order inside a layer.")) {
         Rng rng(81);
@@ -55,6 +58,7 @@ TEST_SUITE("Task 3: extrusion") {
     }
 
     TEST_CASE("extrude: twist and scale give closed; oriented solids without self-intersections" * geolab::points(3) *
+              geolab::builds_on("Task 1, Task 2") *
               geolab::hint("With the walls' triangles as in the contract and twist per step below 90° no triangle flips; "
                            "check your caps' winding and your wall diagonals.")) {
         Rng rng(82);
@@ -94,7 +98,8 @@ TEST_SUITE("Task 3: extrusion") {
     }
 
     TEST_CASE("extrude: a scaled prism is a frustum; V = A·h·(1 + s + s²)/3; twist keeps the cross-section area" *
-              geolab::points(2) * geolab::hint("Scale about the origin before moving; the caps are the scaled profile.")) {
+              geolab::points(2) *
+                        geolab::builds_on("Task 1, Task 2") * geolab::hint("Scale about the origin before moving; the caps are the scaled profile.")) {
         Rng rng(83);
         for (int n = 0; n < 6; ++n) {
             const Profile p = star_with_holes(rng, rng.integer(5, 16), n % 2);
@@ -107,6 +112,7 @@ TEST_SUITE("Task 3: extrusion") {
     }
 
     TEST_CASE("extrude: the caps face outward; the bottom −z and the top +z" * geolab::points(2) *
+              geolab::builds_on("Task 1, Task 2") *
               geolab::hint("The triangulation is counter-clockwise seen from +z: keep it for the top, reverse it for the "
                            "bottom.")) {
         const Profile p = square_with_hole();
@@ -126,6 +132,7 @@ TEST_SUITE("Task 3: extrusion") {
     }
 
     TEST_CASE("extrude: bad options and invalid profiles are rejected" * geolab::points(1) *
+              geolab::builds_on("Task 1, Task 2") *
               geolab::hint("std::invalid_argument for steps < 1, direction.z ≤ 0, scale ≤ 0, non-finite values, a twist "
                            "of a quarter turn or more per step, and invalid profiles.")) {
         const Profile p = square_with_hole();

@@ -129,6 +129,8 @@ TEST_SUITE("Task 5: frames") {
         double prev = 0;
         for (int n : {24, 48, 96, 192}) {
             const double err = std::abs(helix_end_angle(n) - helix_angle);
+            // (a NaN error compares false with everything: no ratio would be checked at all)
+            REQUIRE_MESSAGE(std::isfinite(err), n << " samples: the end angle is not a number");
             if (prev > 0) {
                 const double ratio = prev / err;
                 CHECK_MESSAGE((ratio > 12 && ratio < 21), (n / 2) << " → " << n << " samples: the error fell by " << ratio

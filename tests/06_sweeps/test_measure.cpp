@@ -1,6 +1,7 @@
 // Lab 06, Task 7: measures. Expected values: closed forms (cube, tetrahedron, box areas), long double sums, and
 // Pappus's theorems written out (V = angle·A·x̄, lateral area = angle·Σ|e|·x_mid) for the profile.
 #include "helpers.hpp"
+#include "geolab/grading/chain.hpp"
 
 using namespace lab06;
 
@@ -93,6 +94,7 @@ TEST_SUITE("Task 7: measures") {
     }
 
     TEST_CASE("pappus: the issue's profile gives V = 48π and lateral area 96π; partial angles scale" * geolab::points(2) *
+              geolab::builds_on("Task 1") *
               geolab::hint("V = angle · ∫∫ x dA = angle · (1/6) Σ (xᵢ + xᵢ₊₁)(xᵢ yᵢ₊₁ − xᵢ₊₁ yᵢ) over all loops (holes "
                            "clockwise subtract); lateral area = angle · Σ |e| · x at e's midpoint, holes included.")) {
         const Profile p = square_with_hole({2, 0});
@@ -123,12 +125,14 @@ TEST_SUITE("Task 7: measures") {
         }
     }
 
-    TEST_CASE("pappus: bad input is rejected" * geolab::points(1) *
+    TEST_CASE("pappus: bad input is rejected" * geolab::points(1) * geolab::builds_on("Task 1") *
               geolab::hint("std::invalid_argument for a point with x < 0, an angle ≤ 0, an invalid profile.")) {
         CHECK_THROWS_AS(pappus(square_with_hole({1, 0}), 1.0), std::invalid_argument);
         CHECK_THROWS_AS(pappus(square_with_hole({3, 0}), 0.0), std::invalid_argument);
         Profile q = square_with_hole({3, 0});
         q.holes[0] = reversed(q.holes[0]);
         CHECK_THROWS_AS(pappus(q, 1.0), std::invalid_argument);
+        // valid input is no error ("reject everything" is not the contract)
+        CHECK(pappus(square_with_hole({3, 0}), 1.0).volume > 0);
     }
 }  // TEST_SUITE

@@ -58,6 +58,8 @@ TEST_SUITE("Task 1: profiles") {
             INFO("input: " << str(p));
             CHECK_NOTHROW(validate_profile(p));
         }
+        // (a validator that accepts everything passes the above): a bow tie is no profile
+        CHECK_THROWS_AS(validate_profile({Loop{{0, 0}, {2, 2}, {2, 0}, {0, 2}}, {}}), std::invalid_argument);
     }
 
     TEST_CASE("validate_profile: a loop with the wrong orientation is rejected; the outer loop and each hole" *

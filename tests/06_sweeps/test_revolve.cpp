@@ -2,6 +2,7 @@
 // regular polygon, so the volume is m·sin θ·∫∫ r dA and each band's area is m·(rₐ + r_b)·sin(θ/2)·slant, θ the
 // segment angle), Pappus's limits 48π and 96π for the issue's profile, and lib's check_surface.
 #include "helpers.hpp"
+#include "geolab/grading/chain.hpp"
 
 using namespace lab06;
 
@@ -35,7 +36,7 @@ std::size_t poles(const PolygonSoup& m) {
 
 TEST_SUITE("Task 4: revolution") {
     TEST_CASE("revolve: the issue's square with a hole at offset 2 — V → 48π; A → 96π (Pappus); closed" *
-              geolab::points(3) *
+              geolab::points(3) * geolab::builds_on("Task 1") *
               geolab::hint("(r, z) ↦ (r cos φ, r sin φ, z); the outer edge on the axis makes no faces; a point on the "
                            "axis is one pole vertex; the outer loop gives a sphere-like surface, the hole a torus "
                            "(handout §5).")) {
@@ -60,6 +61,7 @@ TEST_SUITE("Task 4: revolution") {
     }
 
     TEST_CASE("revolve: a full revolution shares its seam (no duplicated ring; no boundary)" * geolab::points(2) *
+              geolab::builds_on("Task 1") *
               geolab::hint("For a full turn the ring has `segments` vertices and the last segment joins back to ring "
                            "index 0: never add a ring at φ = 2π.")) {
         Rng rng(91);
@@ -83,7 +85,7 @@ TEST_SUITE("Task 4: revolution") {
     }
 
     TEST_CASE("revolve: a profile touching the axis closes at single pole vertices without degenerate triangles" *
-              geolab::points(2) *
+              geolab::points(2) * geolab::builds_on("Task 1") *
               geolab::hint("An edge with one end on the axis gives ONE triangle per segment (pole, ring, ring); both ends "
                            "on the axis: no faces.")) {
         for (int n : {3, 8, 33}) {
@@ -107,6 +109,7 @@ TEST_SUITE("Task 4: revolution") {
     }
 
     TEST_CASE("revolve: partial revolutions are closed by two caps" * geolab::points(2) *
+              geolab::builds_on("Task 1, Task 2") *
               geolab::hint("Rings get segments + 1 vertices (φ = 0 and φ = angle both); the cap at φ = 0 is the "
                            "triangulation as it is, the one at φ = angle reversed (or the other way: check the normals).")) {
         Rng rng(92);
@@ -138,7 +141,7 @@ TEST_SUITE("Task 4: revolution") {
     }
 
     TEST_CASE("clip_to_axis: profiles crossing the axis are cut at x = 0; revolve uses the cut profile" *
-              geolab::points(2) *
+              geolab::points(2) * geolab::builds_on("Task 1") *
               geolab::hint("Sutherland–Hodgman against x ≥ 0: keep inside points, add the crossing point (x exactly 0) "
                            "of each edge that crosses; drop consecutive duplicates (handout §5).")) {
         const Profile rect{rectangle_loop(-1, 0, 2, 1), {}};
@@ -190,7 +193,7 @@ TEST_SUITE("Task 4: revolution") {
         CHECK_MESSAGE((same.outer == inside.outer && same.holes == inside.holes), "a profile at x > 0 comes back unchanged");
     }
 
-    TEST_CASE("revolve; clip_to_axis: bad input is rejected" * geolab::points(1) *
+    TEST_CASE("revolve; clip_to_axis: bad input is rejected" * geolab::points(1) * geolab::builds_on("Task 1, Task 2") *
               geolab::hint("std::invalid_argument for segments < 3, angle ≤ 0 or > 2π, a hole reaching the axis, a "
                            "profile with nothing at x ≥ 0, an invalid profile.")) {
         const Profile p = issue_profile();
@@ -212,5 +215,7 @@ TEST_SUITE("Task 4: revolution") {
         Profile q = issue_profile();
         q.holes[0] = reversed(q.holes[0]);
         CHECK_THROWS_AS(revolve(q, {8, 2 * pi}), std::invalid_argument);
+        // valid input is no error ("reject everything" is not the contract)
+        CHECK(revolve(p, {8, 2 * pi}).n_faces() > 0);
     }
 }  // TEST_SUITE

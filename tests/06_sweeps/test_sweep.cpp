@@ -1,6 +1,7 @@
 // Lab 06, Task 6: sweeps along paths. Expected values: the straight sweep equals extrude's layout, tube volumes
 // A·L (Pappus for a tube), lib's check_surface for closedness, orientation, genus and self-intersections.
 #include "helpers.hpp"
+#include "geolab/grading/chain.hpp"
 
 using namespace lab06;
 
@@ -29,6 +30,7 @@ Path ring_path(double R, int n) {
 
 TEST_SUITE("Task 6: sweeps") {
     TEST_CASE("sweep: along a straight path it is the extrusion (positions; closed; V = A·h)" * geolab::points(2) *
+              geolab::builds_on("Task 1, Task 2") *
               geolab::hint("Point (u, v) of sample i is pointsᵢ + u·Nᵢ + v·Bᵢ; walls as in extrude; caps facing −T₀ "
                            "and +T at the end (handout §7).")) {
         Rng rng(111);
@@ -55,6 +57,7 @@ TEST_SUITE("Task 6: sweeps") {
     }
 
     TEST_CASE("sweep: a closed path gives closed tubes without caps (one torus-like surface per loop)" * geolab::points(2) *
+              geolab::builds_on("Task 1") *
               geolab::hint("On a closed path the last sample's ring joins sample 0's; no caps.")) {
         for (int holes : {0, 1}) {
             Profile p{circle_loop({0, 0}, 0.5, 12), {}};
@@ -79,13 +82,14 @@ TEST_SUITE("Task 6: sweeps") {
     }
 
     TEST_CASE("sweep: the trefoil knot with rotation-minimizing frames; closed and without self-intersections" *
-              geolab::points(3) *
+              geolab::points(3) * geolab::builds_on("Task 1") *
               geolab::hint("Use rotation_minimizing_frames' distributed frames so the tube closes; the volume of a thin "
                            "tube is about the profile's area times the path's length.")) {
         const Path path = trefoil_path(600);
         const Profile p{circle_loop({0, 0}, 0.3, 16), {}};
-        const RmfResult r = rotation_minimizing_frames(path, glm::cross(path.tangents[0], glm::dvec3(0, 0, 1)));
-        const PolygonSoup m = sweep(p, path, r.frames);
+        // the frames are made here (helpers.hpp), not by your Task 5
+        const std::vector<Frame> frames = rmf_frames(path, glm::cross(path.tangents[0], glm::dvec3(0, 0, 1)));
+        const PolygonSoup m = sweep(p, path, frames);
         INFO("input: trefoil (600 samples), circle profile r = 0.3 (16 points)");
         const std::string bad = surface_problem(m, 0, 1);
         CHECK_MESSAGE(bad.empty(), "expected a closed, oriented, embedded torus-like tube:" << bad);
@@ -105,14 +109,15 @@ TEST_SUITE("Task 6: sweeps") {
     }
 
     TEST_CASE("sweep: open helix tube with caps facing −T₀ and +T at the end" * geolab::points(2) *
+              geolab::builds_on("Task 1, Task 2") *
               geolab::hint("Start cap: the triangulation reversed; end cap: as it is (with T = N × B the profile is "
                            "counter-clockwise seen from +T).")) {
         const Path path = helix_path(2, 0.4, 2, 120);
         Profile p = square_with_hole();
         for (auto& q : p.outer) q *= 0.2;
         for (auto& q : p.holes[0]) q *= 0.2;
-        const RmfResult r = rotation_minimizing_frames(path, {-1, 0, 0});
-        const PolygonSoup m = sweep(p, path, r.frames);
+        const std::vector<Frame> frames = rmf_frames(path, {-1, 0, 0});  // made here, not by your Task 5
+        const PolygonSoup m = sweep(p, path, frames);
         const std::string bad = surface_problem(m, 0, 1);
         CHECK_MESSAGE(bad.empty(), "expected a closed solid of genus 1:" << bad);
         const std::size_t n = 8, last = 119 * n;
@@ -130,7 +135,7 @@ TEST_SUITE("Task 6: sweeps") {
     }
 
     TEST_CASE("check_sweep: a profile wider than the path's radius of curvature is reported; lib confirms" *
-              geolab::points(2) *
+              geolab::points(2) * geolab::builds_on("Task 1, Task 2") *
               geolab::hint("Circumradius of each three consecutive samples: |a||b||c| / (2|(b − a) × (c − a)|); compare "
                            "the smallest with the profile's largest distance from (0, 0).")) {
         const Path path = ring_path(2, 48);
@@ -200,7 +205,7 @@ TEST_SUITE("Task 6: sweeps") {
                                                                                         << w.min_radius_of_curvature);
     }
 
-    TEST_CASE("sweep; check_sweep: bad input is rejected" * geolab::points(1) *
+    TEST_CASE("sweep; check_sweep: bad input is rejected" * geolab::points(1) * geolab::builds_on("Task 1, Task 2") *
               geolab::hint("std::invalid_argument for an invalid profile, a frame count that differs from the samples, "
                            "too few samples.")) {
         const Path path = helix_path(1, 1, 1, 10);
@@ -213,6 +218,8 @@ TEST_SUITE("Task 6: sweeps") {
         Path two = helix_path(1, 1, 1, 2);
         two.closed = true;
         CHECK_THROWS_AS(sweep(p, two, std::vector<Frame>(2)), std::invalid_argument);
+        // valid input is no error ("reject everything" is not the contract)
+        CHECK(sweep(p, path, rmf_frames(path, {-1, 0, 0})).n_faces() > 0);
         CHECK_THROWS_AS(check_sweep(p, two), std::invalid_argument);
         // Three samples are enough for a closed path: a triangular ring of three prisms.
         const Path tri = polyline_path({{0, 0, 0}, {4, 0, 0}, {0, 4, 0}}, true);

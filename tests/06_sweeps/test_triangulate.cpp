@@ -4,6 +4,7 @@
 // way; together these mean the triangles cover the region exactly once. Profiles: fixed ones, random star-shaped
 // ones, and grid profiles full of ties and collinear points, every loop started at a random point.
 #include "helpers.hpp"
+#include "geolab/grading/chain.hpp"
 
 using namespace lab06;
 
@@ -27,6 +28,7 @@ void check_triangulation(const Profile& p, const Tris& t) {
 
 TEST_SUITE("Task 2: triangulation") {
     TEST_CASE("triangulate: convex polygons and a square with a hole" * geolab::points(1) *
+              geolab::builds_on("Task 1") *
               geolab::hint("Ear clipping: a vertex is an ear when it is convex (orient2d > 0) and no other vertex lies "
                            "in its triangle; clip it, repeat (handout §3).")) {
         for (const Profile& p : {Profile{rectangle_loop(0, 0, 1, 1), {}}, Profile{circle_loop({1, 2}, 3, 5), {}},
@@ -36,6 +38,7 @@ TEST_SUITE("Task 2: triangulation") {
     }
 
     TEST_CASE("triangulate: random star-shaped (non-convex) polygons; started anywhere" * geolab::points(2) *
+              geolab::builds_on("Task 1") *
               geolab::hint("A reflex corner is never an ear; an ear's triangle must not contain any other vertex "
                            "(test all of them, with exact orient2d). The loop's first point is not special.")) {
         Rng rng(72);
@@ -46,6 +49,7 @@ TEST_SUITE("Task 2: triangulation") {
     }
 
     TEST_CASE("triangulate: profiles with several holes (bridging); every loop started anywhere" * geolab::points(3) *
+              geolab::builds_on("Task 1") *
               geolab::hint("Bridge each hole into the polygon from its rightmost vertex M to the nearest vertex P that M "
                            "sees (no edge of the polygon or of any hole in the way) and whose corner opens towards M; "
                            "holes by decreasing rightmost x; the bridge is walked twice (handout §3).")) {
@@ -76,7 +80,7 @@ TEST_SUITE("Task 2: triangulation") {
     }
 
     TEST_CASE("triangulate: grid profiles — holes level with each other and with the outer loop; collinear points" *
-              geolab::points(2) *
+              geolab::points(2) * geolab::builds_on("Task 1") *
               geolab::hint("Ties everywhere: a bridge must not pass through a vertex (a point on the segment blocks it "
                            "too), and a vertex used by an earlier bridge appears twice in the polygon: join at the copy "
                            "whose corner opens towards the hole.")) {
@@ -100,6 +104,7 @@ TEST_SUITE("Task 2: triangulation") {
     }
 
     TEST_CASE("triangulate: combs; collinear points; a loop starting at a straight corner" * geolab::points(2) *
+ geolab::builds_on("Task 1") *
               geolab::hint("Collinear consecutive points (orient2d = 0) are not ears; clip the others first. Deep notches "
                            "need the full containment test, with points on the triangle's edges counted as inside.")) {
         Loop comb{{0, 0}, {10, 0}, {10, 1}};
@@ -118,12 +123,14 @@ TEST_SUITE("Task 2: triangulation") {
         check_triangulation(ring, triangulate(ring));
     }
 
-    TEST_CASE("triangulate: invalid profiles are rejected" * geolab::points(1) *
+    TEST_CASE("triangulate: invalid profiles are rejected" * geolab::points(1) * geolab::builds_on("Task 1") *
               geolab::hint("Validate first (validate_profile) and let its std::invalid_argument through.")) {
         Profile p = square_with_hole();
         p.holes[0] = reversed(p.holes[0]);
         CHECK_THROWS_AS(triangulate(p), std::invalid_argument);
         CHECK_THROWS_AS(triangulate({Loop{{0, 0}, {2, 2}, {2, 0}, {0, 2}}, {}}), std::invalid_argument);
+        // valid input is no error ("reject everything" is not the contract)
+        CHECK(triangulate(square_with_hole()).size() == 8);
     }
 }  // TEST_SUITE
 

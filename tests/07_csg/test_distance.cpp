@@ -1,6 +1,7 @@
 // Lab 07, Tasks 1-3: primitive distances, tree SDFs, smooth minimum, point membership. Expected values: closed
 // forms and the independent references of helpers.hpp.
 #include "helpers.hpp"
+#include "geolab/grading/chain.hpp"
 
 using namespace lab07;
 
@@ -131,6 +132,9 @@ TEST_SUITE("Task 1: primitives") {
         n.a = 0;
         n.b = 0;
         CHECK_THROWS_AS(primitive_distance(n, glm::dvec3(0.0)), std::invalid_argument);
+        // a leaf is no error ("reject everything" is not the contract): the unit sphere's centre is 1 inside
+        Node leaf;
+        CHECK(primitive_distance(leaf, glm::dvec3(0.0)) == -1.0);
     }
 }
 
@@ -157,7 +161,7 @@ TEST_SUITE("Task 2: signed distances") {
     }
 
     TEST_CASE("sdf: two unit cubes offset by 0.5 — union min; intersection max; difference max(a; −b)" *
-              geolab::points(3) *
+              geolab::points(3) * geolab::builds_on("Task 1") *
               geolab::hint("A − B is max(a, −b): inside A and outside B. max(a, b) would be the intersection.")) {
         const Tree A = unit_cube_at(glm::dvec3(0.0)), B = unit_cube_at(glm::dvec3(0.5));
         Rng rng(12);
@@ -174,6 +178,7 @@ TEST_SUITE("Task 2: signed distances") {
     }
 
     TEST_CASE("sdf: transformed leaves — rigid motions keep distances exact; M⁻¹ maps the point" * geolab::points(3) *
+              geolab::builds_on("Task 1") *
               geolab::hint("Evaluate the primitive at M⁻¹x (the point in the leaf's coordinates), and multiply by "
                            "min_stretch(M) so that scaled leaves still give world distances.")) {
         Rng rng(13);
@@ -210,6 +215,7 @@ TEST_SUITE("Task 2: signed distances") {
     }
 
     TEST_CASE("sdf: min/max is exact outside a union but only a bound inside and near edges" * geolab::points(2) *
+              geolab::builds_on("Task 1") *
               geolab::hint("Union = min(a, b) exactly; the test also shows where that is not the true distance.")) {
         // Two overlapping unit spheres at (±0.5, 0, 0); at the origin the true distance to the surface is the
         // distance to the circle where the spheres meet: √(1 − 0.25) = 0.866..., but min(a, b) = −0.5.
@@ -229,6 +235,7 @@ TEST_SUITE("Task 2: signed distances") {
     }
 
     TEST_CASE("sdf: blend nodes use smooth_min of the children's values" * geolab::points(1) *
+              geolab::builds_on("Task 1") *
               geolab::hint("Op::blend: smooth_min(a, b, k) with the node's k.")) {
         const Tree a = leaf(Shape::sphere, {0.5, 0, 0}, translate({-0.4, 0, 0}));
         const Tree b = leaf(Shape::sphere, {0.5, 0, 0}, translate({0.4, 0, 0}));
@@ -246,6 +253,7 @@ TEST_SUITE("Task 2: signed distances") {
     }
 
     TEST_CASE("sdf (prepared): reads each leaf's prepared stretch and inverse; never M" * geolab::points(2) *
+              geolab::builds_on("Task 1") *
               geolab::hint("On a PreparedTree a leaf's value is stretch · primitive_distance(leaf, inverse · x): "
                            "prepare() computed both once; recomputing them from M for every sample is what made the "
                            "polygonization slow.")) {
@@ -274,7 +282,7 @@ TEST_SUITE("Task 2: signed distances") {
 }
 
 TEST_SUITE("Task 3: point membership") {
-    TEST_CASE("classify: the logo's points in; on and out" * geolab::points(2) *
+    TEST_CASE("classify: the logo's points in; on and out" * geolab::points(2) * geolab::builds_on("Task 1") *
               geolab::hint("Leaves: on when |d| ≤ tol; combine with the three-valued rules of the header.")) {
         const Tree t = logo();
         Rng rng(21);
@@ -304,6 +312,7 @@ TEST_SUITE("Task 3: point membership") {
     }
 
     TEST_CASE("classify: the tolerance is relative to the scene's size" * geolab::points(3) *
+              geolab::builds_on("Task 1, Task 2") *
               geolab::hint("tol = rel_tol · scene_size(t): the same scene scaled by 1000 classifies the same points "
                            "(scaled) the same way.")) {
         for (double s : {1e-3, 1.0, 1e3}) {
@@ -328,7 +337,7 @@ TEST_SUITE("Task 3: point membership") {
     }
 
     TEST_CASE("classify: the three-valued rules at shared faces (touching union; equal subtraction)" *
-              geolab::points(3) *
+              geolab::points(3) * geolab::builds_on("Task 1, Task 2") *
               geolab::hint("Union: in if either is in, out if both out, else on. Difference: out if A out or B in; in "
                            "if A in and B out; else on.")) {
         const Tree a = unit_cube_at({0, 0, 0}), b = unit_cube_at({1, 0, 0});

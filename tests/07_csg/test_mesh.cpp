@@ -2,6 +2,7 @@
 // hand (two unit cubes offset by 0.5: overlap 0.5³ = 0.125, union 2 − 0.125 = 1.875, difference 1 − 0.125 =
 // 0.875; unit cube ∩ octahedron |x|+|y|+|z| ≤ 1: 1 − 8 corners of (1/2)³/6 = 5/6).
 #include "helpers.hpp"
+#include "geolab/grading/chain.hpp"
 
 using namespace lab07;
 
@@ -48,7 +49,7 @@ TEST_SUITE("Task 7: meshes and volumes") {
     }
 
     TEST_CASE("mesh_tree: two unit cubes offset by 0.5 — union 1.875; intersection 0.125; difference 0.875" *
-              geolab::points(3) *
+              geolab::points(3) * geolab::builds_on("Task 1, Task 2") *
               geolab::hint("Polygonize sdf() over bounds(t) grown by 5% of its diagonal (so the mesh is closed), then "
                            "volume(). The cubes' faces are planes: linear interpolation along lattice edges finds them "
                            "exactly; only edges and corners are cut.")) {
@@ -73,7 +74,8 @@ TEST_SUITE("Task 7: meshes and volumes") {
     }
 
     TEST_CASE("mesh_tree: unit cube ∩ octahedron |x|+|y|+|z| ≤ 1 has volume 5/6; errors fall with resolution" *
-              geolab::points(2) * geolab::hint("Half-spaces are unbounded: intersected with the cube, bounds() is "
+              geolab::points(2) *
+                        geolab::builds_on("Task 1, Task 2") * geolab::hint("Half-spaces are unbounded: intersected with the cube, bounds() is "
                                                "finite and the mesh is closed.")) {
         const Tree t = op(Op::intersect, leaf(Shape::box, glm::dvec3(0.5)), octahedron(1.0));
         double last = inf;
@@ -92,7 +94,7 @@ TEST_SUITE("Task 7: meshes and volumes") {
     }
 
     TEST_CASE("mesh_tree: the lattice is bounds(t) grown by 5% of its diagonal; resolution cells on the longest side" *
-              geolab::points(1) *
+              geolab::points(1) * geolab::builds_on("Task 1, Task 2") *
               geolab::hint("Box b = bounds(t); pad = 0.05·|b.hi − b.lo|; polygonize(field, {b.lo − pad, b.hi + pad}, "
                            "resolution).")) {
         const Tree t = leaf(Shape::box, {1.0, 0.6, 0.4}, translate({0.3, -0.2, 0.1}));

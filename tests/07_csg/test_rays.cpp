@@ -1,6 +1,7 @@
 // Lab 07, Tasks 4-6: spans in primitives, Roth's combination, ray casting. Expected values: closed forms, and the
 // definitions of the primitives sampled along the ray (helpers.hpp).
 #include "helpers.hpp"
+#include "geolab/grading/chain.hpp"
 
 using namespace lab07;
 
@@ -351,6 +352,8 @@ TEST_SUITE("Task 5: combining interval lists") {
             const auto a = make(2 + n % 4), b = make(2 + (n / 4) % 4);
             for (Op o : {Op::unite, Op::intersect, Op::subtract}) {
                 const auto got = combined(o, a, b);
+                // (no span carries no wrong normal): a union of non-empty lists is not empty
+                if (o == Op::unite && !a.empty()) CHECK_MESSAGE(!got.empty(), "A ∪ B is empty although A is not");
                 for (const Span& s : got)
                     for (int e = 0; e < 2; ++e) {
                         const double t = e ? s.t1 : s.t0;
@@ -376,6 +379,7 @@ TEST_SUITE("Task 5: combining interval lists") {
     }
 
     TEST_CASE("combine: a box minus an equal box is empty; normals of subtracted parts are flipped" * geolab::points(3) *
+              geolab::builds_on("Task 4") *
               geolab::hint("In A − B the endpoints that come from B take −(B's normal): the wall of a hole faces into "
                            "the hole.")) {
         const Tree box = leaf(Shape::box, glm::dvec3(1.0));
@@ -395,6 +399,7 @@ TEST_SUITE("Task 5: combining interval lists") {
     }
 
     TEST_CASE("ray_spans: leaves map the ray by M⁻¹ and normals by M⁻ᵀ" * geolab::points(2) *
+              geolab::builds_on("Task 4") *
               geolab::hint("The local ray is (M⁻¹ o, M⁻¹ d) with the same t; the world normal is normalize(M⁻ᵀ n). "
                            "Using M instead of M⁻¹ moves a translated sphere the wrong way.")) {
         const Tree s = leaf(Shape::sphere, {1, 0, 0}, translate({3, 0, 0}));
@@ -435,6 +440,7 @@ TEST_SUITE("Task 5: combining interval lists") {
 
     TEST_CASE("ray_spans: a node whose box the line misses gets an empty list and is not entered; an empty A skips B "
               "in ∩ and −" * geolab::points(3) *
+              geolab::builds_on("Task 4") *
               geolab::hint("Check line_meets_box(world, lo, hi) first: a miss empties the node's list and its subtree "
                            "is not visited. After A's list: for ∩ and − an empty A means an empty result without "
                            "casting B; for ∪, B is still needed.")) {
@@ -488,6 +494,7 @@ TEST_SUITE("Task 5: combining interval lists") {
     }
 
     TEST_CASE("ray_spans: reads the prepared maps and not M; one list per node reused; refuses blends" * geolab::points(2) *
+              geolab::builds_on("Task 4") *
               geolab::hint("Leaves use the node's `inverse` for the ray and `normal_map` for the normals (computed once "
                            "by prepare). Resize lists to t.nodes.size(); throw when t.has_blend.")) {
         // an ellipsoid x²/4 + y² + z² ≤ 1 moved to (3, 0, 0); then its M overwritten: only the prepared maps are right
@@ -524,6 +531,7 @@ TEST_SUITE("Task 5: combining interval lists") {
 
 TEST_SUITE("Task 6: ray casting") {
     TEST_CASE("first_hit: entering; starting inside (the exit); behind the origin; missing" * geolab::points(3) *
+              geolab::builds_on("Task 4, Task 5") *
               geolab::hint("The first span end with t ≥ t_min: t0 if t0 ≥ t_min, else t1 if the ray starts inside.")) {
         const Tree t = logo();
         // (0.5, 0.45) is on the top face (inside the sphere's disc ρ < √(1.3² − 1) = 0.83, outside the z hole
@@ -559,6 +567,7 @@ TEST_SUITE("Task 6: ray casting") {
     }
 
     TEST_CASE("first_hit: the logo from random directions agrees with the definition" * geolab::points(3) *
+              geolab::builds_on("Task 4, Task 5") *
               geolab::hint("Every hit point is on the boundary: inside just after (entering) or just before.")) {
         const Tree t = logo();
         const PreparedTree p = prepare(t);
@@ -592,6 +601,7 @@ TEST_SUITE("Task 6: ray casting") {
     }
 
     TEST_CASE("render_image: hits are grey 0.1 + 0.8|n·l|; misses white; size and alpha" * geolab::points(3) *
+              geolab::builds_on("Task 4, Task 5") *
               geolab::hint("One ray per pixel through camera.ray(x, y, w, h), first_hit with t_min = 0.")) {
         const Tree t = leaf(Shape::box, glm::dvec3(0.5), rotate(30, {0, 1, 0}));
         PinholeCamera cam;

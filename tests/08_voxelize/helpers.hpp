@@ -19,6 +19,7 @@
 
 #include "geolab/grading/test.hpp"
 #include "geolab/io.hpp"
+#include "geolab/mesh_field.hpp"
 #include "geolab/models.hpp"
 #include "geolab/voxels.hpp"
 
@@ -185,6 +186,46 @@ inline PolygonSoup dust(std::int64_t nx, std::int64_t ny, double z, bool shuffle
 }
 
 // The enclosed volume of a closed, outward mesh (divergence theorem, long double).
+// The generalized winding number of a mesh at p: the signed solid angles of its fan triangles over 4π (lib's
+// triangle_solid_angle). On a closed mesh it is an integer away from the surface, and odd exactly where parity sets
+// the voxel whose centre p is. Independent of every student function.
+// `distance`, when given, receives the distance from p to the mesh.
+inline double winding_number(const PolygonSoup& m, const glm::dvec3& p, double* distance = nullptr) {
+    double w = 0, d = std::numeric_limits<double>::infinity();
+    for (std::size_t f = 0; f < m.n_faces(); ++f) {
+        const auto vs = m.face(f);
+        for (std::size_t k = 1; k + 1 < vs.size(); ++k) {
+            const glm::dvec3 &a = m.positions[vs[0]], &b = m.positions[vs[k]], &c = m.positions[vs[k + 1]];
+            w += geolab::triangle_solid_angle(p, a, b, c);
+            if (distance) d = std::min(d, glm::length(geolab::closest_point_on_triangle(p, a, b, c) - p));
+        }
+    }
+    if (distance) *distance = d;
+    return w / (4 * M_PI);
+}
+// Parity at `samples` random voxel centres of a closed mesh (grid units; all of them when samples < 0), told by the
+// winding number (a centre on the surface, where the perturbation decides, is skipped): the first voxel where `got`
+// differs, or "". `checked` counts the voxels compared.
+inline std::string parity_spot_check(const BitGrid& got, const PolygonSoup& m, Rng& rng, int samples, int* checked) {
+    *checked = 0;
+    const Dims d = got.dims;
+    if (d.nx <= 0 || d.ny <= 0 || d.nz <= 0 || !tail_clean(got)) return "not a grid of its dims";
+    const std::int64_t n = d.count();
+    for (std::int64_t s = 0; s < (samples < 0 ? n : samples); ++s) {
+        const std::int64_t v = samples < 0 ? s : std::int64_t(rng.uniform(0, double(n))) % n;
+        const std::int64_t i = v % d.nx, j = (v / d.nx) % d.ny, k = v / (d.nx * d.ny);
+        double distance = 0;
+        const double w = winding_number(m, glm::dvec3(i + 0.5, j + 0.5, k + 0.5), &distance);
+        if (distance < 1e-6 || std::abs(w - std::round(w)) > 1e-6) continue;  // on the surface: the perturbation decides
+        ++*checked;
+        const bool inside = std::llabs(std::llround(w)) % 2 == 1;
+        if (got.get(i, j, k) != inside)
+            return "voxel (" + std::to_string(i) + ", " + std::to_string(j) + ", " + std::to_string(k) + ") is " +
+                   (inside ? "inside (winding number " + std::to_string(w) + ") but unset" : "outside but set");
+    }
+    return "";
+}
+
 inline double mesh_volume(const PolygonSoup& s) {
     LD v = 0;
     for (std::size_t f = 0; f < s.n_faces(); ++f) {

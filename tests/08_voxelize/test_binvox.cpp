@@ -139,5 +139,9 @@ TEST_SUITE("Task 6: binvox") {
         b.translate.y = 0;
         b.grid.words.push_back(0);
         CHECK_THROWS_AS(encode_binvox(b), std::invalid_argument);
+        // the same grid with the right words is written ("reject everything" is not the contract)
+        b.grid.words.pop_back();
+        const std::string bytes = encode_binvox(b);
+        CHECK_MESSAGE(bytes.rfind("#binvox 1\n", 0) == 0, "a valid 2 x 2 x 2 grid: the file should start with the header");
     }
 }

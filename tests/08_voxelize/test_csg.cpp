@@ -69,6 +69,9 @@ TEST_SUITE("Task 5: voxel CSG") {
         negative.dims = {-1, -1, 1};
         negative.values = {0.5};
         CHECK_THROWS_AS(csg_union(negative, negative), std::invalid_argument);
+        // matching grids are no error ("reject everything" is not the contract)
+        CHECK(csg_union(a, a).values.size() == a.values.size());
+        CHECK(csg_subtract(a, a).dims == a.dims);
         negative.dims = {1, -1, -1};
         CHECK_THROWS_AS(csg_subtract(negative, negative), std::invalid_argument);
         const BitGrid p({3, 3, 3}), q({3, 3, 4});

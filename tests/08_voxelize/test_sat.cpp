@@ -53,7 +53,7 @@ TEST_SUITE("Task 2: the triangle-box test") {
                            "axes e_d × (triangle edge) may: test all nine")) {
         // found by search: the face axes do not separate them, clipping says they miss the box
         Rng rng(13);
-        int found = 0;
+        int found = 0, centred = 0;
         for (int n = 0; n < 200000 && found < 300; ++n) {
             Tri t;
             const glm::dvec3 c(rng.uniform(-0.3, 1.3), rng.uniform(-0.3, 1.3), rng.uniform(-0.3, 1.3));
@@ -66,8 +66,17 @@ TEST_SUITE("Task 2: the triangle-box test") {
             Tri u = t;
             for (auto& p : u) p += glm::dvec3(5, -2, 7);
             check(u, 5, -2, 7, false, "edge-axis case moved");
+            // and moved so that its centroid is the voxel's centre: now it meets the open voxel ("false" always fails)
+            Tri w = t;
+            const glm::dvec3 shift = glm::dvec3(0.5) - (t[0] + t[1] + t[2]) / 3.0;
+            for (auto& p : w) p += shift;
+            if (expected_overlap(w, 0, 0, 0)) {
+                check(w, 0, 0, 0, true, "edge-axis case centred on the voxel");
+                ++centred;
+            }
         }
         CHECK_MESSAGE(found >= 100, "test self-check: only " << found << " edge-axis cases found");
+        CHECK_MESSAGE(centred >= 100, "test self-check: only " << centred << " centred cases");
     }
     TEST_CASE("triangle-box: touching a face; an edge or a corner only is no overlap" * geolab::points(2) *
               geolab::hint("the voxel is open: a projection that only touches the box's projection separates")) {
@@ -111,5 +120,10 @@ TEST_SUITE("Task 2: the triangle-box test") {
         check({glm::dvec3(0.5, 0.5, 0.5), glm::dvec3(0.5, 0.5, 0.5), glm::dvec3(0.5, 0.5, 0.5)}, 0, 0, 0, false, "a point");
         check({glm::dvec3(-1, 0.5, 0.5), glm::dvec3(2, 0.5, 0.5), glm::dvec3(0.5, 0.5, 0.5)}, 0, 0, 0, false, "a segment");
         check({glm::dvec3(0.2, 0.2, 0.2), glm::dvec3(0.4, 0.4, 0.4), glm::dvec3(0.9, 0.9, 0.9)}, 0, 0, 0, false, "collinear");
+        // the same places with a little area do belong ("no voxel, ever" is not the rule)
+        check({glm::dvec3(0.5, 0.5, 0.5), glm::dvec3(0.5 + 1e-6, 0.5, 0.5), glm::dvec3(0.5, 0.5 + 1e-6, 0.5)}, 0, 0, 0, true,
+              "a tiny triangle at the centre");
+        check({glm::dvec3(0.2, 0.2, 0.2), glm::dvec3(0.4, 0.4, 0.4), glm::dvec3(0.9, 0.9, 0.8)}, 0, 0, 0, true,
+              "almost collinear");
     }
 }

@@ -2,6 +2,7 @@
 // (c + (ε, ε², ε³)), worked out by hand for boxes and octahedra; volumes from the divergence theorem.
 #include <list>
 
+#include "geolab/grading/chain.hpp"
 #include "helpers.hpp"
 
 using namespace lab08;
@@ -134,7 +135,8 @@ TEST_SUITE("Task 4: solid voxelization") {
               geolab::points(2) * geolab::time_limit(120) *
               geolab::hint("exact predicates plus the same perturbed point for all three axes: a closed mesh's parity "
                            "does not depend on the ray's direction")) {
-        int closed = 0;
+        int closed = 0, spot_checks = 0;
+        Rng rng(80);
         std::list<PolygonSoup> keep;  // every mesh stays alive: the grader keys its digests by address and size
         std::vector<std::filesystem::path> files;
         for (const auto& e : std::filesystem::directory_iterator(geolab::models_dir()))
@@ -156,7 +158,13 @@ TEST_SUITE("Task 4: solid voxelization") {
             const BitGrid x = parity_fill(u, g.dims, 0, 1), y = parity_fill(u, g.dims, 1, 1), z = parity_fill(u, g.dims, 2, 1);
             CHECK_MESSAGE(first_difference(y, x).empty(), f.filename().string() << ": axis y vs axis x: " << first_difference(y, x));
             CHECK_MESSAGE(first_difference(z, x).empty(), f.filename().string() << ": axis z vs axis x: " << first_difference(z, x));
+            // agreeing is not enough (an empty grid agrees with itself): axis x is the solid at 24 voxel centres
+            int checked = 0;
+            const std::string wrong = parity_spot_check(x, u, rng, 24, &checked);
+            CHECK_MESSAGE(wrong.empty(), f.filename().string() << ", axis x against the winding number: " << wrong);
+            spot_checks += checked;
         }
+        CHECK_MESSAGE(spot_checks >= 12 * closed, "test self-check: only " << spot_checks << " voxel centres away from the surfaces");
         CHECK_MESSAGE(closed >= 20, "test self-check: only " << closed << " closed models found in " << geolab::models_dir());
     }
     TEST_CASE("solid: count_boundary_edges counts the edges of odd use" * geolab::points(1) *
@@ -215,15 +223,21 @@ TEST_SUITE("Task 4: solid voxelization") {
         check_grid(flood_fill_solid(border), all, "a shell on the grid's border");
         check_grid(flood_fill_solid(BitGrid(d)), BitGrid(d), "an empty grid");
     }
-    TEST_CASE("solid: voxelize_solid uses parity on closed meshes and the flood fill on open ones" * geolab::points(2) *
-              geolab::hint("count_boundary_edges = 0 → the AND of the three parity fills; else flood_fill_solid of the "
-                           "surface voxels; report which")) {
+    TEST_CASE("solid: voxelize_solid uses parity on a closed mesh" * geolab::points(1) *
+              geolab::hint("count_boundary_edges = 0 → the AND of the three parity fills; report which")) {
         const Dims d{12, 12, 12};
         const SolidResult c = voxelize_solid(octahedron({5.5, 5.5, 5.5}, 4), d, 1);
         CHECK(c.method == SolidMethod::parity);
         CHECK(c.boundary_edges == 0);
         CHECK(c.axis_disagreements == 0);
         check_grid(c.grid, octahedron_solid(d, {5.5, 5.5, 5.5}, 4), "closed octahedron");
+    }
+    // The open-mesh path is flood_fill_solid of voxelize_surface by the contract: your voxelize_solid calls your
+    // surface voxelization (Task 3, which applies Task 2's rule), so this test builds on those tasks.
+    TEST_CASE("solid: voxelize_solid uses the flood fill of the surface on open meshes" * geolab::points(1) *
+              geolab::builds_on("Task 2, Task 3") *
+              geolab::hint("count_boundary_edges > 0 → flood_fill_solid of the surface voxels; report which")) {
+        const Dims d{12, 12, 12};
         // a cube [2, 8]³ whose top face has a hole much smaller than a voxel: the surface voxels close it
         PolygonSoup holed = box_mesh({2, 2, 2}, {8, 8, 8});
         // replace the top face (z = 8, the second quad: triangles 2 and 3) by a fan around a tiny hole
@@ -258,6 +272,7 @@ TEST_SUITE("Task 4: solid voxelization") {
             INFO(name << ": method " << int(r.method) << ", " << r.boundary_edges << " boundary edges");
             CHECK(r.method == SolidMethod::flood_fill);
             CHECK(r.boundary_edges == boundary_edges_by_map(m));
+            // the contract's solid of YOUR surface voxels (their correctness is Task 3's business)
             check_grid(r.grid, expected_flood_fill(voxelize_surface(m, {48, 48, 48}, 1)), name + ": flood fill of its surface");
         }
     }

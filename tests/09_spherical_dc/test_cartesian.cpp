@@ -1,6 +1,7 @@
 // Lab 09, Task 7: the Cartesian one-shot function dual_contour_cartesian (handout §5.4).
 #include "geolab/fixtures.hpp"
 #include "helpers.hpp"
+#include "geolab/grading/chain.hpp"
 
 using namespace lab09;
 
@@ -16,7 +17,7 @@ double finest_h(const ScalarField& f, int level) { return cartesian_domain(f, 0.
 TEST_SUITE("Task 7: Cartesian one-shot") {
 
 TEST_CASE("dual_contour_cartesian: sphere; off-centre sphere; torus and blob are closed 2-manifolds" *
-          geolab::points(2) *
+          geolab::points(2) * geolab::whole_chain() *
           geolab::hint("build_octree -> place_vertices -> simplify (when simplify_tolerance > 0) -> contour. A hole "
                        "or a crack means neighbours disagree on an edge: shared lattice samples, each minimal edge "
                        "once, the same tie rule everywhere. Handout §5.4.")) {
@@ -42,6 +43,7 @@ TEST_CASE("dual_contour_cartesian: sphere; off-centre sphere; torus and blob are
 }
 
 TEST_CASE("dual_contour_cartesian: a box and a cube give exactly 8 vertices and 12 triangles" * geolab::points(2) *
+          geolab::whole_chain() *
           geolab::hint("Rank-1 faces, rank-2 edges and rank-3 corners fit their QEFs exactly, so the default "
                        "simplification merges everything down to the 8 corner cells. Handout §5.2.")) {
     for (const char* name : {"box", "cube"})
@@ -58,7 +60,7 @@ TEST_CASE("dual_contour_cartesian: a box and a cube give exactly 8 vertices and 
 }
 
 TEST_CASE("dual_contour_cartesian: vertices lie on the surface; max |f(v)| <= 0.01 h at levels 7-8" *
-          geolab::points(1) *
+          geolab::points(1) * geolab::whole_chain() *
           geolab::hint("The reference measures max|f|/h = 0.0059 (sphere, level 7) and 0.0076 (torus, level 8). A "
                        "larger error: crossings not converged (tolerance relative to the edge), normals not unit, "
                        "QEF not solved about the mass point, or vertices clamped wrongly. Handout §5.1.")) {
@@ -75,6 +77,7 @@ TEST_CASE("dual_contour_cartesian: vertices lie on the surface; max |f(v)| <= 0.
 }
 
 TEST_CASE("dual_contour_cartesian: enclosed volume within 0.5% of the analytic volume; outward" * geolab::points(2) *
+          geolab::whole_chain() *
           geolab::hint("Reference volume errors: sphere level 5 0.11%, torus level 6 0.10%. A negative volume "
                        "means the faces wind inward. Handout §5.3.")) {
     struct Case {
@@ -99,6 +102,7 @@ TEST_CASE("dual_contour_cartesian: enclosed volume within 0.5% of the analytic v
 }
 
 TEST_CASE("dual_contour_cartesian: bad parameters throw std::invalid_argument" * geolab::points(1) *
+          geolab::whole_chain() *
           geolab::hint("max_level must be in [1, 10]; a field with empty bounds is rejected by cartesian_domain. "
                        "Handout §5.4.")) {
     const FieldPtr f = geolab::sphere({0, 0, 0}, 0.5);
@@ -116,7 +120,7 @@ TEST_CASE("dual_contour_cartesian: bad parameters throw std::invalid_argument" *
 }
 
 TEST_CASE("dual_contour_cartesian: DcStats describes the tree that was contoured (simplification on and off)" *
-          geolab::points(1) *
+          geolab::points(1) * geolab::whole_chain() *
           geolab::hint("cells = nodes reachable from the root after simplification, leaves = reachable leaves, "
                        "crossings = what place_vertices returned, collapses = what simplify returned (0 when "
                        "simplify_tolerance is 0: simplification off), samples = the tree's samples(). Handout §5.4.")) {

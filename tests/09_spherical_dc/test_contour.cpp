@@ -3,6 +3,7 @@
 #include <bitset>
 
 #include "helpers.hpp"
+#include "geolab/grading/chain.hpp"
 
 using namespace lab09;
 
@@ -22,7 +23,7 @@ std::size_t leaves_with_vertex(const Octree& t) {
 TEST_SUITE("Task 4: vertex placement") {
 
 TEST_CASE("place_vertices: a vertex in exactly the leaves whose corners change sign; f <= 0 inside" *
-          geolab::points(2) *
+          geolab::points(2) * geolab::builds_on("Task 1, Task 2") *
           geolab::hint("A leaf gets a vertex iff its 8 corner samples are not all on one side, where inside means "
                        "f <= 0 (a sample that is exactly 0 is inside: the lattice box here has zeros on its faces). "
                        "One QEF plane per sign-changing edge; each finest edge's crossing computed once. Record "
@@ -74,7 +75,7 @@ TEST_CASE("place_vertices: a vertex in exactly the leaves whose corners change s
 }
 
 TEST_CASE("place_vertices: vertices are clamped into their cells when the QEF minimiser leaves them" *
-          geolab::points(2) *
+          geolab::points(2) * geolab::builds_on("Task 1, Task 2") *
           geolab::hint("The QEF minimiser can be far outside the cell (nearly parallel planes, noisy normals): clamp "
                        "it to the cell's box. Where it is inside, keep it unchanged. Handout §5.1.")) {
     const WobblyPlane f(0.1234);
@@ -105,7 +106,7 @@ TEST_CASE("place_vertices: vertices are clamped into their cells when the QEF mi
 }
 
 TEST_CASE("place_vertices: the cells at a box's corners get the exact corners; every vertex is on the box" *
-          geolab::points(2) *
+          geolab::points(2) * geolab::builds_on("Task 1, Task 2") *
           geolab::hint("Hermite data (crossing + unit normal) on every sign-changing edge, QEF solved with tau = 0.01: "
                        "a corner cell has rank 3 and its vertex is the exact corner. Handout §5.1.")) {
     const glm::dvec3 c(0.03, -0.02, 0.01), half(0.61, 0.47, 0.33);
@@ -133,6 +134,7 @@ TEST_CASE("place_vertices: the cells at a box's corners get the exact corners; e
 TEST_SUITE("Task 5: simplification") {
 
 TEST_CASE("simplify: a box collapses to its 8 corner vertices" * geolab::points(1) *
+          geolab::builds_on("Task 1, Task 2") *
           geolab::hint("Bottom-up: 8 leaf children merge when the sign tests pass and the merged QEF's residual "
                        "sqrt(Q / count) <= tolerance with its minimiser in the parent cell. Flat faces and straight "
                        "edges fit exactly, so only the corners remain. Handout §5.2.")) {
@@ -162,6 +164,7 @@ TEST_CASE("simplify: a box collapses to its 8 corner vertices" * geolab::points(
 }
 
 TEST_CASE("simplify: at the default tolerance a curved surface keeps its finest vertices" * geolab::points(1) *
+          geolab::builds_on("Task 1, Task 2") *
           geolab::hint("The tolerance is a length (1e-5 h here): a sphere's merged QEF never fits that well, so no "
                        "cell with a vertex collapses (empty cells may). Handout §5.2.")) {
     const FieldPtr f = geolab::sphere({0.0, 0.0, 0.0}, 0.8);
@@ -175,6 +178,7 @@ TEST_CASE("simplify: at the default tolerance a curved surface keeps its finest 
 }
 
 TEST_CASE("simplify: the topology tests keep two nearby solids apart at any tolerance" * geolab::points(1) *
+          geolab::builds_on("Task 1, Task 2") *
           geolab::hint("Collapse only when the parent's corner signs form one sheet AND every edge midpoint; face "
                        "centre and the cell centre agree with a corner of that edge/face/cell (Ju et al. 2002). "
                        "Handout §5.2.")) {
@@ -209,7 +213,7 @@ TEST_CASE("simplify: the topology tests keep two nearby solids apart at any tole
 }
 
 TEST_CASE("simplify: tolerance 0 merges only exact fits; a box with faces on coarse lattice planes gives 8 corners" *
-          geolab::points(1) *
+          geolab::points(1) * geolab::builds_on("Task 1, Task 2") *
           geolab::hint("Collapse when sqrt(Q / count) <= tolerance: with tolerance 0 the cells whose merged QEF fits "
                        "exactly (Q = 0: flat faces with exact crossings) still merge, nothing else does. Samples that "
                        "are exactly 0 (faces on lattice planes) are inside, in the 27 sub-lattice signs too. "
@@ -299,6 +303,7 @@ TEST_CASE("simplify: tolerance 0 merges only exact fits; a box with faces on coa
 
 TEST_CASE("simplify: the sign tests decide each of the 256 corner configurations (also with a stray point)" *
           geolab::points(1) *
+          geolab::builds_on("Task 1") *
           geolab::hint("Test (1): the inside corners are connected through cube edges, and so are the outside ones "
                        "(both, for every one of the 256 configurations). Test (2): each of the 19 sub-lattice points "
                        "that is not a corner (edge midpoints, face centres, the centre) has the sign of at least one "
@@ -606,7 +611,7 @@ TEST_CASE("contour: exactly the contract's triangles on uniform and adaptive Car
 }
 
 TEST_CASE("contour: a box with faces on lattice planes (f = 0 at lattice points) is closed and exact" *
-          geolab::points(2) *
+          geolab::points(2) * geolab::builds_on("Task 1, Task 2") *
           geolab::hint("Use the same tie rule (f <= 0 inside) in place_vertices and contour: a sample that is exactly "
                        "0 must be on the same side for both, or cells around an edge lack vertices. Handout §5.3.")) {
     const LatticeBox f(5, 0.05, {6, 9, 11}, {25, 20, 23});

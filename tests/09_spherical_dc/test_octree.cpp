@@ -1,5 +1,6 @@
 // Lab 09, Task 3: the Cartesian octree with conservative refinement (handout §4).
 #include "helpers.hpp"
+#include "geolab/grading/chain.hpp"
 
 using namespace lab09;
 
@@ -159,7 +160,7 @@ TEST_CASE("build_octree: a thin torus (tube thinner than the coarse cells) is re
 }
 
 TEST_CASE("build_octree: a mesh with a hole (its sign jumps across the hole): every leaf at a sign change is finest" *
-          geolab::points(2) *
+          geolab::points(2) * geolab::builds_on("Task 1, Task 2, Task 4, Task 5, Task 6") *
           geolab::hint("The distance test is a guarantee only where f is continuous. MeshField's sign flips on a cap "
                        "across a hole, far from the mesh, where |f| is large: finish the tree with the given "
                        "tree.refine_around_sign_changes(). Handout §2, 'Where the test is no guarantee'.")) {

@@ -1,6 +1,7 @@
 // Lab 09, Tasks 8-9: the origin of the spherical octree (handout §6): Welzl's smallest enclosing sphere and the
 // eq. (6) correction that moves the origin off the surface.
 #include "helpers.hpp"
+#include "geolab/grading/chain.hpp"
 
 using namespace lab09;
 
@@ -266,7 +267,7 @@ TEST_CASE("correct_origin: exactly on the surface where grad f vanishes: the sid
 }
 
 TEST_CASE("dual_contour_spherical: the default r_max from an off-centre origin covers every corner of bounds()" *
-          geolab::points(1) *
+          geolab::points(1) * geolab::whole_chain() *
           geolab::hint("r_max = 0 means 1.05 x the largest distance from the (corrected) origin to the 8 corners of "
                        "bounds(): corner c takes hi.x when bit 0 of c is set, hi.y for bit 1, hi.z for bit 2. From an "
                        "origin off the centre the farthest corner can be any of the 8. Handout §6.2.")) {
@@ -308,7 +309,7 @@ TEST_CASE("correct_origin: unit <= 0 throws std::invalid_argument" * geolab::poi
 }
 
 TEST_CASE("dual_contour_spherical: an origin on the surface is corrected and the mesh stays closed" *
-          geolab::points(1) *
+          geolab::points(1) * geolab::whole_chain() *
           geolab::hint("Radii about an origin ON the surface degenerate (the paper's diverging vertices): apply "
                        "correct_origin first and use its last position; DcStats::origin_path records it. "
                        "Handout §6.2.")) {

@@ -1,5 +1,6 @@
 // Lab 09, Tasks 10-11: the spherical-coordinate octree (handout §7) and the polar holes (handout §8).
 #include "helpers.hpp"
+#include "geolab/grading/chain.hpp"
 
 using namespace lab09;
 
@@ -207,7 +208,7 @@ TEST_CASE("build_spherical_octree: every finest cell the surface passes through 
 }
 
 TEST_CASE("build_spherical_octree: a hole over the north pole (the sign jumps there): rings of finest leaves" *
-          geolab::points(2) *
+          geolab::points(2) * geolab::whole_chain() *
           geolab::hint("Where the field's sign jumps (MeshField of a mesh with holes), the ball test alone can leave "
                        "coarse leaves at a sign change, even in the ring around the polar axis: finish with the "
                        "given tree.refine_around_sign_changes(). Handout §2 and §4.")) {
@@ -236,7 +237,7 @@ TEST_CASE("build_spherical_octree: a hole over the north pole (the sign jumps th
 }
 
 TEST_CASE("place_vertices (spherical): each vertex lies in its cell in (r theta phi); phi relative to the cell" *
-          geolab::points(2) *
+          geolab::points(2) * geolab::builds_on("Task 1, Task 2, Task 4, Task 5, Task 6") *
           geolab::hint("Clamp r, theta and phi of the QEF solution to the cell's intervals. phi must be measured "
                        "relative to the cell's lower bound modulo 2pi: a cell next to the seam has phi up to 2pi while "
                        "to_spherical returns values near 0 just past it. Handout §7.3.")) {
@@ -295,7 +296,7 @@ TEST_CASE("place_vertices (spherical): each vertex lies in its cell in (r theta 
 }
 
 TEST_CASE("place_vertices (spherical): each QEF holds its own cell's crossings; also at the poles and the origin" *
-          geolab::points(1) *
+          geolab::points(1) * geolab::builds_on("Task 1, Task 2, Task 4, Task 5, Task 6") *
           geolab::hint("Octree::canonical merges the lattice points on the polar axis (all phi) and, with r_min = 0, "
                        "at the origin. Key the crossing cache by the lower end alone and every theta-edge leaving a "
                        "pole (or radial edge leaving the origin) shares one crossing: file those edges under their "
@@ -360,6 +361,7 @@ TEST_CASE("place_vertices (spherical): each QEF holds its own cell's crossings; 
 }
 
 TEST_CASE("dual_contour_spherical: a sphere across the phi = 0 seam leaves no crack" * geolab::points(1) *
+          geolab::builds_on("Task 1, Task 2, Task 4, Task 5, Task 6, Task 8, Task 9, Task 11") *
           geolab::hint("The lattice's phi index is taken modulo N: the cells at phi index N-1 and 0 are neighbours "
                        "(Octree::canonical / locate wrap it). Look up the 4 leaves around an edge with the wrapped "
                        "index. Handout §7.4.")) {
@@ -380,6 +382,7 @@ TEST_CASE("dual_contour_spherical: a sphere across the phi = 0 seam leaves no cr
 }
 
 TEST_CASE("dual_contour_spherical: sphere; torus and blob are closed; volume within 0.5%" * geolab::points(1) *
+          geolab::builds_on("Task 1, Task 2, Task 4, Task 5, Task 6, Task 8, Task 9, Task 11") *
           geolab::hint("Reference volume errors at level 6: sphere 0.11%, torus 0.18%. Handout §7.4.")) {
     struct Case {
         FieldPtr f;
@@ -402,7 +405,7 @@ TEST_CASE("dual_contour_spherical: sphere; torus and blob are closed; volume wit
 }
 
 TEST_CASE("dual_contour_spherical: a sphere needs fewer vertices than on the Cartesian octree (Table 1)" *
-          geolab::points(1) *
+          geolab::points(1) * geolab::builds_on("Task 1, Task 2, Task 4, Task 5, Task 6, Task 8, Task 9, Task 11") *
           geolab::hint("About its centre a sphere crosses only radial edges: one vertex per (theta, phi) cell. "
                        "Reference counts at levels 4/5/6: Cartesian 1016/3992/15968, spherical 258/1026/4098.")) {
     const FieldPtr f = geolab::sphere({0.0, 0.0, 0.0}, 0.8);
@@ -421,7 +424,7 @@ TEST_CASE("dual_contour_spherical: a sphere needs fewer vertices than on the Car
 }
 
 TEST_CASE("dual_contour_spherical: surfaces crossing the first shells above the origin or r_min are closed; DcStats" *
-          geolab::points(1) *
+          geolab::points(1) * geolab::whole_chain() *
           geolab::hint("Only edges ON the inner sphere (r index 0) have no cells below them: skip those, and nothing "
                        "at r index 1 or above. DcStats: cells = reachable nodes, leaves = reachable leaves of the tree "
                        "that was contoured; crossings = what place_vertices returned. Handout §7.")) {
@@ -488,7 +491,7 @@ TEST_CASE("dual_contour_spherical: surfaces crossing the first shells above the 
 }
 
 TEST_CASE("build_spherical_octree and dual_contour_spherical: bad parameters throw std::invalid_argument" *
-          geolab::points(1) *
+          geolab::points(1) * geolab::whole_chain() *
           geolab::hint("max_level in [1, 10] (both ends accepted), 0 <= r_min < r_max. Handout §7.1.")) {
     const FieldPtr f = geolab::sphere({0, 0, 0}, 0.5);
     const Octree ok = build_spherical_octree(*f, 3, glm::dvec3(0.0), 0.0, 1.0);
@@ -550,7 +553,7 @@ TEST_CASE("build_spherical_octree and dual_contour_spherical: bad parameters thr
 TEST_SUITE("Task 11: poles") {
 
 TEST_CASE("dual_contour_spherical: normal_projection closes both poles (2 rings; 2 ghosts on the axis)" *
-          geolab::points(2) *
+          geolab::points(2) * geolab::builds_on("Task 1, Task 2, Task 4, Task 5, Task 6, Task 8, Task 9, Task 10") *
           geolab::hint("contour returns one PoleRing per sign-changing radial edge ON the polar axis, north AND "
                        "south; fill_poles closes each with a fan around a ghost vertex on the axis. The paper left "
                        "the second pole as future work: it is part of this task. Handout §8.")) {
@@ -578,6 +581,7 @@ TEST_CASE("dual_contour_spherical: normal_projection closes both poles (2 rings;
 }
 
 TEST_CASE("dual_contour_spherical: vertical_projection also closes; none leaves exactly 2 holes" * geolab::points(1) *
+          geolab::builds_on("Task 1, Task 2, Task 4, Task 5, Task 6, Task 8, Task 9, Task 10") *
           geolab::hint("PoleFill::none adds nothing: the mesh then has one boundary loop around each pole (and no "
                        "other defect). vertical_projection is the earlier ghost node: a flat cap at the ring's mean "
                        "height. Handout §8.")) {
@@ -612,7 +616,7 @@ TEST_CASE("dual_contour_spherical: vertical_projection also closes; none leaves 
 }
 
 TEST_CASE("fill_poles: a ring of 2 vertices is already closed: no ghost and no fan (level 1 stays a closed manifold)" *
-          geolab::points(1) *
+          geolab::points(1) * geolab::builds_on("Task 1, Task 2, Task 4, Task 5, Task 6, Task 8, Task 9, Task 10") *
           geolab::hint("At level 1 there are 2 phi cells: the ring around an axis edge has 2 vertices, and the 'hole' "
                        "is bounded twice by the one edge {ring[0], ring[1]}, which two faces already share. A fan "
                        "(ghost, r0, r1), (ghost, r1, r0) would put that edge into 4 faces. Rings of fewer than 3 "

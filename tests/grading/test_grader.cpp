@@ -55,6 +55,34 @@ TEST_CASE("the grader lists every fixture with its metadata") {
     CHECK(result("fails an assertion").info.hint == "look at the sum");
     CHECK(result("ungraded").info.points == 0);
     CHECK(result("passes").info.suite == "fixtures");
+    // declared dependencies on other tasks (grading/chain.hpp): only the independence check reads them
+    CHECK(result("hidden and passes").info.builds_on == "Task 2");
+    CHECK(result("ungraded").info.builds_on == "*");
+    CHECK(result("passes").info.builds_on.empty());
+}
+
+TEST_CASE("--geolab-run-all runs every listed test in one process, failures or not, one verdict line each") {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / ("geolab_run_all_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    {
+        std::ofstream list(dir / "list.txt");
+        list << "5\tpasses\n5\tfails an assertion\n5\tnot implemented\n5\thidden and passes\n";
+    }
+    geolab::grading::RunOptions o;
+    o.sandbox.no_network = false;
+    const auto c = geolab::grading::run_command(
+        {std::string(GEOLAB_FIXTURE_PROGRAM), "--geolab-run-all", (dir / "list.txt").string(), (dir / "out.jsonl").string()},
+        30, o);
+    CHECK(c.exit_code == 0);
+    std::ifstream in(dir / "out.jsonl");
+    std::vector<std::string> status;
+    for (std::string line; std::getline(in, line);) {
+        const auto j = nlohmann::json::parse(line);
+        status.push_back(j.at("status").get<std::string>() + (j.value("not_implemented", false) ? " (stub)" : ""));
+    }
+    CHECK(status == std::vector<std::string>{"passed", "failed", "failed (stub)", "passed"});
+    fs::remove_all(dir);
 }
 
 TEST_CASE("each misbehaviour is isolated and classified") {
@@ -353,7 +381,7 @@ TEST_CASE("record and replay: the judge lists the tests and decides each verdict
     const auto& rep = replay_report();
     REQUIRE(rep.error == "");
     CHECK(rep.isolated);
-    CHECK(rep.results.size() == 17);
+    CHECK(rep.results.size() == 21);
     CHECK(replayed("a timed call is timed by the judge").info.hidden);
     CHECK(replayed("hangs in a call").info.timeout_s == 1);
     const std::map<std::string, Status> expected = {
@@ -372,6 +400,10 @@ TEST_CASE("record and replay: the judge lists the tests and decides each verdict
         {"member functions cross the boundary", Status::passed},
         {"callbacks are replayed into the judge's own function", Status::passed},
         {"changing the test's data shows as different arguments", Status::failed},
+        {"a soup whose face runs past its indices is refused", Status::failed},
+        {"a soup whose index names no position is refused", Status::failed},
+        {"an image shorter than its size is refused", Status::failed},
+        {"a broken soup in an out-argument is refused", Status::failed},
     };
     for (const auto& [name, status] : expected) {
         const auto& r = replayed(name);
@@ -395,6 +427,13 @@ TEST_CASE("record and replay: messages name the call the student's program was i
     CHECK(says(replayed("changing the test's data shows as different arguments"),
                "does not match call 2 (poke): argument 1 differs"));
     CHECK(replayed("hangs in a call").seconds < 5);
+    // answers that break their type's invariants never reach the judge's test code (it would read outside them)
+    CHECK(says(replayed("a soup whose face runs past its indices is refused"),
+               "last offset 268435456 is not its number of indices 3"));
+    CHECK(says(replayed("a soup whose index names no position is refused"), "index 2 is 5, but it has 3 positions"));
+    CHECK(says(replayed("an image shorter than its size is refused"),
+               "64 x 64 pixels with 4 bytes of rgba instead of 16384"));
+    CHECK(says(replayed("a broken soup in an out-argument is refused"), "(in the answer of call 1, fill_soup)"));
 }
 
 TEST_CASE("record and replay: a crash names the input and the last check passed; the memory cap is named") {

@@ -6,6 +6,7 @@
 
 #include "commands.hpp"
 #include "geolab/config.hpp"
+#include "geolab/grading/independence.hpp"
 #include "geolab/grading/report.hpp"
 #include "geolab/grading/runner.hpp"
 #include "geolab/grading/submission.hpp"
@@ -25,6 +26,8 @@ struct GradeArgs {
     std::string test;
     std::string submission, lab, work_dir, forbidden, figures;
     bool asan = false, no_course_build = false, allow_unisolated = false;
+    bool independence = false;
+    int job = 0;
     double max_seconds = 1200;
 };
 
@@ -64,7 +67,7 @@ bool check_expectation(const std::vector<grading::LabReport>& reports, const std
 // geolab grade --submission DIR|ZIP --lab NN: one student's files against the full course (hidden tests too).
 int run_submission(const GradeArgs& a) {
     if (a.lab.empty()) throw std::runtime_error("--submission needs --lab NN (the lab the submission is for)");
-    grading::SubmissionOptions opt = submission_options(resolve_lab(a.lab), a.work_dir, 0);
+    grading::SubmissionOptions opt = submission_options(resolve_lab(a.lab), a.work_dir, a.job);
     opt.asan = a.asan;
     opt.build_course = !a.no_course_build;
     opt.forbidden = a.forbidden;
@@ -93,7 +96,31 @@ int run_submission(const GradeArgs& a) {
     return rep.status == grading::SubmissionStatus::not_found ? 1 : 0;
 }
 
+// geolab grade NN --independence: DESIGN.md rule 6 on the reference, one task file stubbed at a time.
+int run_independence(const GradeArgs& a) {
+    if (!config::has_solutions) throw std::runtime_error("--independence needs the reference (solutions/)");
+    std::vector<std::string> labs;
+    for (const auto& l : a.labs) labs.push_back(resolve_lab(l));
+    if (labs.empty()) labs = known_labs();
+    bool ok = true;
+    for (const auto& lab : labs) {
+        grading::IndependenceOptions opt;
+        opt.course_root = source_dir();
+        opt.build_dir = bin_dir().parent_path();
+        opt.work_dir = opt.build_dir / "independence" / lab.substr(0, 2);
+        opt.lab = lab;
+        opt.jobs = a.jobs > 0 ? a.jobs : std::max(1u, std::thread::hardware_concurrency());
+        opt.timeout_s = a.timeout;
+        if (!a.quiet) opt.progress = [](const std::string& line) { std::cerr << "  " << line << "\n"; };
+        const auto rep = grading::check_independence(opt);
+        std::cout << rep.text();
+        ok = ok && rep.ok();
+    }
+    return ok ? 0 : 1;
+}
+
 int run_grade(const GradeArgs& a) {
+    if (a.independence) return run_independence(a);
     if (!a.submission.empty()) return run_submission(a);
     if (!a.lab.empty()) throw std::runtime_error("--lab is for --submission; to grade this tree say: geolab grade " + a.lab);
     std::vector<std::string> labs;
@@ -194,6 +221,9 @@ void add_grade(CLI::App& app, int& status) {
     cmd->add_option("--lab", a->lab, "With --submission: the lab it is for (01, 1 or 01_halfedge)");
     cmd->add_flag("--asan", a->asan, "With --submission: also run with AddressSanitizer + UBSan (an ungraded item)");
     cmd->add_option("--work-dir", a->work_dir, "With --submission: the grading work folder (default: BUILD/grading)");
+    cmd->add_option("--job", a->job, "With --submission: the job folder to use (jobN): gradings of one lab that run at "
+                                     "once need different ones; they share the compiled-object cache")
+        ->check(CLI::Range(0, 63));
     cmd->add_option("--forbidden", a->forbidden, "With --submission: the forbidden-calls list (default labs/NN/forbidden.txt)");
     cmd->add_option("--figures", a->figures, "With --submission: write the tests' pictures (attach_mesh_figure) here");
     cmd->add_option("--max-seconds", a->max_seconds,
@@ -203,6 +233,9 @@ void add_grade(CLI::App& app, int& status) {
                   "With --submission, as root: grade even when the sandbox cannot be set up (the report says NOT ISOLATED)");
     cmd->add_flag("--no-course-build", a->no_course_build,
                   "With --submission: do not bring the course's test program up to date first");
+    cmd->add_flag("--independence", a->independence,
+                  "CI check of DESIGN.md rule 6 on the reference: each task file stubbed in turn must cost the points of "
+                  "its own tasks only");
     cmd->add_option("--expect", a->expect, "CI check: 'full' (every graded test passes) or 'zero' (every graded test "
                                            "fails cleanly: failed or not implemented, never crashed or timed out)")
         ->check(CLI::IsMember({"full", "zero"}));

@@ -349,6 +349,33 @@ void flush_events(wire::Writer& w) {
     w.buffer().clear();
 }
 
+std::string soup_problem(const PolygonSoup& s) {
+    if (s.offsets.empty() || s.offsets.front() != 0)
+        return "a PolygonSoup whose offsets do not start with 0 (an empty soup has offsets {0})";
+    for (std::size_t f = 0; f + 1 < s.offsets.size(); ++f)
+        if (s.offsets[f + 1] < s.offsets[f])
+            return "a PolygonSoup whose offsets decrease at face " + std::to_string(f) + " (" +
+                   std::to_string(s.offsets[f]) + " then " + std::to_string(s.offsets[f + 1]) + ")";
+    if (s.offsets.back() != s.indices.size())
+        return "a PolygonSoup whose last offset " + std::to_string(s.offsets.back()) + " is not its number of indices " +
+               std::to_string(s.indices.size());
+    for (std::size_t i = 0; i < s.indices.size(); ++i)
+        if (s.indices[i] >= s.positions.size())
+            return "a PolygonSoup whose index " + std::to_string(i) + " is " + std::to_string(s.indices[i]) + ", but it has " +
+                   std::to_string(s.positions.size()) + " positions";
+    return "";
+}
+
+std::string image_problem(const render::Image& img) {
+    if (img.width < 0 || img.height < 0)
+        return "an Image of " + std::to_string(img.width) + " x " + std::to_string(img.height) + " pixels";
+    const std::uint64_t want = 4ull * std::uint64_t(img.width) * std::uint64_t(img.height);
+    if (img.rgba.size() != want)
+        return "an Image of " + std::to_string(img.width) + " x " + std::to_string(img.height) + " pixels with " +
+               std::to_string(img.rgba.size()) + " bytes of rgba instead of " + std::to_string(want);
+    return "";
+}
+
 void argument_mismatch(std::size_t index, bool member) {
     const CallContext* c = current_call();
     const std::string where = c ? "call " + std::to_string(c->call) + " (" + c->function + ")" : std::string("a call");

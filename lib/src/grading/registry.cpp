@@ -1,3 +1,4 @@
+#include "geolab/grading/chain.hpp"
 #include "geolab/grading/test.hpp"
 
 namespace geolab {
@@ -12,6 +13,10 @@ TestMeta& meta_for(const doctest::detail::TestCase& tc) { return test_registry()
 std::string& current_test() {
     static std::string name;
     return name;
+}
+std::map<std::string, std::string>& builds_on_tests() {
+    static std::map<std::string, std::string> tasks;
+    return tasks;
 }
 std::vector<std::string>& attached_figures() {
     static std::vector<std::string> figures;

@@ -5,6 +5,7 @@
 #include <cerrno>
 #include <cstdlib>
 #include <csignal>
+#include <signal.h>
 #include <cstring>
 #include <fstream>
 #include <functional>
@@ -70,6 +71,7 @@ struct ChildOutcome {
     std::string output;   // stdout + stderr, up to the cap
     std::string verdict;  // everything written to the verdict pipe
     bool timed_out = false, flooded = false, exited = false, started = true;
+    bool stopped = false;  // ended by the caller's stop flag (not by its own doing)
     std::string sandbox_error;  // the sandbox could not be set up in the child (then the program never ran)
     int exit_code = 0, signal = 0;
     double seconds = 0;
@@ -418,12 +420,28 @@ void kill_everything(pid_t test_pid, unsigned uid) {
     }
 }
 
+// write() to a pipe whose reader may be gone, without the grader dying of SIGPIPE: the signal is blocked in this
+// thread for the write and a pending one is taken back (EPIPE is the answer then).
+void write_without_sigpipe(int fd, const char* p, std::size_t n) {
+    sigset_t pipe_set, old;
+    sigemptyset(&pipe_set);
+    sigaddset(&pipe_set, SIGPIPE);
+    ::pthread_sigmask(SIG_BLOCK, &pipe_set, &old);
+    const ssize_t w = ::write(fd, p, n);
+    if (w < 0 && errno == EPIPE) {
+        const timespec zero{0, 0};
+        while (::sigtimedwait(&pipe_set, nullptr, &zero) > 0) {
+        }
+    }
+    ::pthread_sigmask(SIG_SETMASK, &old, nullptr);
+}
+
 // Run argv under a supervisor with the limits of `opt`. `extra_fds` become the child's fds 3, 4, ... (record
 // and replay pipes); the verdict pipe's write end follows them and is passed as GEOLAB_RESULT_FD together with
 // GEOLAB_TOKEN=token (when token is non-empty). `forked` is called in the grader once the supervisor exists.
 ChildOutcome run_child(const std::vector<std::string>& argv, const std::string& token, double timeout_s,
                        const RunOptions& opt, rlim_t memory_mb, const std::vector<int>& extra_fds = {},
-                       const std::function<void()>& forked = {}) {
+                       const std::function<void()>& forked = {}, const std::atomic<bool>* stop = nullptr) {
     ChildOutcome out;
     const Sandbox& sb = opt.sandbox;
     const bool root = ::geteuid() == 0;
@@ -640,13 +658,17 @@ ChildOutcome run_child(const std::vector<std::string>& argv, const std::string& 
     bool out_open = true, verdict_open = true, status_open = true, asked = false;
     std::string status_bytes;
     auto ask_stop = [&] {
-        if (!asked) (void)!::write(ctrl_pipe[1], "k", 1);
+        if (!asked) write_without_sigpipe(ctrl_pipe[1], "k", 1);  // the supervisor may have ended already
         asked = true;
     };
     while (out_open || verdict_open || status_open) {
         auto now = Clock::now();
         if (!asked && now >= deadline) {
             out.timed_out = true;
+            ask_stop();
+        }
+        if (!asked && stop && stop->load()) {
+            out.stopped = true;  // the caller has what it needs (record and replay: the judge's verdict)
             ask_stop();
         }
         if (now >= hard_deadline) {  // the supervisor itself is stuck: kill it (its test dies with it)
@@ -859,6 +881,7 @@ std::vector<TestInfo> list_tests(const std::filesystem::path& program, const Run
         t.hidden = j.value("hidden", false);
         t.hint = j.value("hint", "");
         t.timeout_s = j.value("timeout", 0.0);
+        t.builds_on = j.value("builds_on", "");
         if (!j.value("filter_safe", true))
             throw std::runtime_error(t.file + ":" + std::to_string(t.line) + ": test name '" + t.name +
                                      "' contains one of * ? , \\ [ ] which the grader cannot select exactly");
@@ -887,6 +910,15 @@ RunOptions judge_options(const RunOptions& opt) {
     j.sandbox.collect = nullptr;
     if (j.sandbox.allow_list) j.sandbox.visible.push_back(opt.judge);  // its own program, read-only
     return j;
+}
+
+// True when the judge's verdict (the line with the run's token) says it did not stop at the end of the recording
+// ("stopped" is not "eof"): then it decided from what the performer sent, and the performer's fate changes nothing.
+bool verdict_without_eof(const std::string& verdict, const std::string& token) {
+    const auto pos = verdict.find(token + " ");
+    if (pos == std::string::npos) return false;
+    const auto j = nlohmann::json::parse(verdict.substr(pos + token.size() + 1), nullptr, false);
+    return !j.is_discarded() && j.is_object() && j.value("stopped", "") != "eof";
 }
 
 // Record and replay: the performer runs the test with the student's code and records into the judge, which
@@ -927,10 +959,13 @@ TestResult run_replayed(const std::filesystem::path& program, const TestInfo& te
     const RunOptions judge_opt = judge_options(opt);
     ChildOutcome perf, judge;
     std::exception_ptr perf_error;
+    // Once the judge has decided from a recording that did not end early (a wrong or malformed answer, or the end of
+    // the test), the rest of the performer's run can change nothing: it is stopped instead of running the test on.
+    std::atomic<bool> judge_decided{false};
     std::thread performer_thread([&] {
         try {
             perf = run_child({program.string(), "--geolab-record", test.name}, "", limit, perf_opt, opt.memory_mb,
-                             {record[1], go[0]}, one_forked);
+                             {record[1], go[0]}, one_forked, &judge_decided);
         } catch (...) {
             perf_error = std::current_exception();
         }
@@ -942,9 +977,11 @@ TestResult run_replayed(const std::filesystem::path& program, const TestInfo& te
                           token, 2 * limit + 10, judge_opt, opt.memory_mb, {record[0], go[1]}, one_forked);
     } catch (...) {
         close_ours();
+        judge_decided = true;
         performer_thread.join();
         throw;
     }
+    if (verdict_without_eof(judge.verdict, token)) judge_decided = true;
     performer_thread.join();
     close_ours();
     if (perf_error) std::rethrow_exception(perf_error);

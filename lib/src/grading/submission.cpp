@@ -20,10 +20,53 @@
 
 #include "geolab/grading/release.hpp"
 #include "geolab/models.hpp"
+#include "course_build.hpp"
 #include "text_file.hpp"
 
 namespace geolab::grading {
 namespace fs = std::filesystem;
+namespace detail {
+
+CommandResult run_plain(const std::vector<std::string>& argv, double timeout_s, std::size_t memory_mb,
+                        std::size_t output_cap) {
+    RunOptions o;
+    o.memory_mb = memory_mb;
+    o.output_cap = output_cap;
+    o.file_size_mb = 1024;
+    o.sandbox.no_network = false;
+    return run_command(argv, timeout_s, o);
+}
+
+std::vector<std::string> compile_command(const fs::path& build, const fs::path& source) {
+    const fs::path db = build / "compile_commands.json";
+    auto j = nlohmann::json::parse(read_text(db), nullptr, false);
+    if (j.is_discarded()) throw std::runtime_error(db.string() + ": cannot be read");
+    for (const auto& e : j) {
+        if (fs::path(e.value("file", "")) != source) continue;
+        if (e.contains("arguments")) return e["arguments"].get<std::vector<std::string>>();
+        return split_command(e.value("command", ""));
+    }
+    throw std::runtime_error(db.string() + " has no compile command for " + source.string() +
+                             " (re-run cmake on the course build)");
+}
+
+std::vector<std::string> link_command(const fs::path& build, const std::string& target) {
+    const std::string ninja = find_program("ninja");
+    if (ninja.empty()) throw std::runtime_error("ninja not found: the grader needs the course's Ninja build");
+    CommandResult r = run_plain({ninja, "-C", build.string(), "-t", "commands", target}, 60);
+    if (r.exit_code != 0) throw std::runtime_error("cannot read the link command of " + target + ": " + r.output);
+    std::istringstream lines(r.output);
+    std::string line, last;
+    while (std::getline(lines, line))
+        if (!line.empty()) last = line;
+    std::vector<std::string> args;
+    for (auto& a : split_command(last))
+        if (a != ":" && a != "&&") args.push_back(a);
+    return args;
+}
+
+}  // namespace detail
+
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -32,6 +75,9 @@ using detail::read_text;
 using detail::write_text;
 using detail::split_command;
 using detail::find_program;
+using detail::run_plain;
+using detail::compile_command;
+using detail::link_command;
 
 // A folder only root may enter, or that others may only traverse (0711).
 void make_dir(const fs::path& p, unsigned mode) {
@@ -67,17 +113,6 @@ std::map<std::string, std::string> lab_files(const fs::path& root, const std::st
                 files[e.path().filename().string()] = read_text(e.path());
     }
     return files;
-}
-
-// Run a trusted command (unzip, nm, ninja, the linker) with plain limits, no sandbox.
-CommandResult run_plain(const std::vector<std::string>& argv, double timeout_s, std::size_t memory_mb = 0,
-                        std::size_t output_cap = 4 << 20) {
-    RunOptions o;
-    o.memory_mb = memory_mb;
-    o.output_cap = output_cap;
-    o.file_size_mb = 1024;
-    o.sandbox.no_network = false;
-    return run_command(argv, timeout_s, o);
 }
 
 // The submitted files: every regular file under `dir` (symlinks and special files are ignored).
@@ -130,20 +165,6 @@ Picked pick_files(const fs::path& dir, const std::map<std::string, std::string>&
     return p;
 }
 
-// The course's compile command of one lab file, from compile_commands.json.
-std::vector<std::string> compile_command(const fs::path& build, const fs::path& source) {
-    const fs::path db = build / "compile_commands.json";
-    auto j = nlohmann::json::parse(read_text(db), nullptr, false);
-    if (j.is_discarded()) throw std::runtime_error(db.string() + ": cannot be read");
-    for (const auto& e : j) {
-        if (fs::path(e.value("file", "")) != source) continue;
-        if (e.contains("arguments")) return e["arguments"].get<std::vector<std::string>>();
-        return split_command(e.value("command", ""));
-    }
-    throw std::runtime_error(db.string() + " has no compile command for " + source.string() +
-                             " (re-run cmake on the course build)");
-}
-
 // The folders a compile command reads headers from (-I, -isystem, -iquote, -idirafter; joined or separate):
 // what the compiler is shown, read-only, besides the system's own folders.
 std::vector<fs::path> include_dirs(const std::vector<std::string>& cmd) {
@@ -155,22 +176,6 @@ std::vector<fs::path> include_dirs(const std::vector<std::string>& cmd) {
             else if (cmd[i].size() > f.size() && cmd[i].compare(0, f.size(), f) == 0) dirs.push_back(cmd[i].substr(f.size()));
         }
     return dirs;
-}
-
-// The course's link command of test_<lab> (the last command ninja would run for it).
-std::vector<std::string> link_command(const fs::path& build, const std::string& lab) {
-    const std::string ninja = find_program("ninja");
-    if (ninja.empty()) throw std::runtime_error("ninja not found: the grader needs the course's Ninja build");
-    CommandResult r = run_plain({ninja, "-C", build.string(), "-t", "commands", "test_" + lab}, 60);
-    if (r.exit_code != 0) throw std::runtime_error("cannot read the link command of test_" + lab + ": " + r.output);
-    std::istringstream lines(r.output);
-    std::string line, last;
-    while (std::getline(lines, line))
-        if (!line.empty()) last = line;
-    std::vector<std::string> args;
-    for (auto& a : split_command(last))
-        if (a != ":" && a != "&&") args.push_back(a);
-    return args;
 }
 
 std::string replace_all(std::string s, const std::string& from, const std::string& to) {
@@ -941,7 +946,7 @@ SubmissionReport grade_submission(const fs::path& submission, const SubmissionOp
 
         // 4. Link the course's test objects with the student's objects, with the course's own link command.
         auto link = [&](const std::vector<fs::path>& objects, bool asan, const fs::path& out) {
-            std::vector<std::string> cmd = link_command(build, opt.lab), args;
+            std::vector<std::string> cmd = link_command(build, "test_" + opt.lab), args;
             const std::string archive = "liblab_" + opt.lab.substr(0, 2) + ".a";
             // The performer (record and replay) links the lab with each boundary function renamed for the
             // recorder: the student's objects get the same renaming (definitions and their calls among them).
@@ -1032,7 +1037,7 @@ SubmissionReport grade_submission(const fs::path& submission, const SubmissionOp
                 if (!given.count(name)) student_objects.push_back({name, obj});
             }
         }
-        const std::vector<std::string> link_args = link_command(build, opt.lab);
+        const std::vector<std::string> link_args = link_command(build, "test_" + opt.lab);
         const CourseSymbols course = cached_course_symbols(link_args, build, course_program,
                                                            "liblab_" + opt.lab.substr(0, 2) + ".a", cache);
         for (const auto& [name, obj] : student_objects)

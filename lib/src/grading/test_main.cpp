@@ -15,6 +15,7 @@
 #define DOCTEST_CONFIG_NO_POSIX_SIGNALS  // a crash must reach the grader as a signal, not a report
 #include <doctest/doctest.h>
 
+#include <chrono>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
@@ -35,6 +36,7 @@
 
 #include "geolab/errors.hpp"
 #include "geolab/grading/boundary_calls.hpp"
+#include "geolab/grading/chain.hpp"
 #include "geolab/grading/test.hpp"
 
 namespace {
@@ -46,6 +48,7 @@ char g_token_buf[128] = {};  // constant-initialized: usable before any dynamic 
 int g_result_fd = -1;
 int g_seq_fd = -1;  // --geolab-run-seq: one verdict line per test, no token (geolab mutate, trusted code only)
 bool g_seq_passed = false;  // --geolab-run-seq: the last test's verdict
+std::chrono::steady_clock::time_point g_seq_start;  // --geolab-run-seq: when the current test started
 struct VerdictListener;
 VerdictListener* g_verdict = nullptr;
 
@@ -84,6 +87,13 @@ std::string last_check_text() {
 // Characters that doctest's --test-case filter would interpret.
 bool name_is_filter_safe(const std::string& n) { return n.find_first_of("*?,\\[]") == std::string::npos; }
 
+// The tasks a test is declared to build on (grading/chain.hpp), "" for none.
+std::string builds_on(const std::string& name) {
+    const auto& all = geolab::detail::builds_on_tests();
+    const auto it = all.find(name);
+    return it == all.end() ? std::string() : it->second;
+}
+
 // Lists test cases as JSON lines.
 struct ListReporter : doctest::IReporter {
     explicit ListReporter(const doctest::ContextOptions&) {}
@@ -95,7 +105,7 @@ struct ListReporter : doctest::IReporter {
             json j{{"name", tc.m_name},     {"suite", tc.m_test_suite ? tc.m_test_suite : ""},
                    {"file", short_path(tc.m_file.c_str())}, {"line", tc.m_line},
                    {"points", meta.points}, {"hidden", meta.hidden},
-                   {"hint", meta.hint},     {"timeout", meta.timeout_s},
+                   {"hint", meta.hint},     {"timeout", meta.timeout_s}, {"builds_on", builds_on(tc.m_name)},
                    {"filter_safe", name_is_filter_safe(tc.m_name)}};
             std::cout << j.dump() << "\n";
         }
@@ -150,6 +160,10 @@ struct VerdictListener : doctest::IReporter {
         ran.push_back(tc.m_name);
         geolab::detail::current_test() = tc.m_name;
         g_last_check = {};
+        g_not_implemented_failure = false;  // per test (--geolab-run-seq runs several in one process)
+        g_out_of_memory = false;
+        if (geolab::boundary::channel().mode == geolab::boundary::Channel::Mode::off)
+            geolab::boundary::channel().last_function = "";
     }
     void test_case_reenter(const doctest::TestCaseData&) override {}
     void test_case_end(const doctest::CurrentTestCaseStats& st) override {
@@ -221,7 +235,10 @@ struct VerdictListener : doctest::IReporter {
     void send(const char* status, bool not_implemented, const std::string& stopped, const std::string& input) {
         if (g_seq_fd >= 0) {  // --geolab-run-seq: the verdict of this test; the next one follows
             g_seq_passed = std::strcmp(status, "passed") == 0;
-            const std::string line = json{{"ran", ran}, {"status", status}, {"messages", messages}}.dump() + "\n";
+            const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - g_seq_start).count();
+            const std::string line =
+                json{{"ran", ran}, {"status", status}, {"not_implemented", not_implemented}, {"messages", messages},
+                     {"seconds", seconds}, {"last_call", geolab::boundary::channel().last_function}}.dump() + "\n";
             for (std::size_t done = 0; done < line.size();) {
                 const ssize_t w = ::write(g_seq_fd, line.data() + done, line.size() - done);
                 if (w <= 0) break;
@@ -370,8 +387,11 @@ int main(int argc, char** argv) {
     // named in LIST (one "SECONDS<tab>NAME" per line) in that order in this one process, appends one JSON verdict
     // line per test to OUT, and stops after the first failure. A test past its SECONDS is ended by SIGALRM; a
     // crash or hang ends the process: the first test not answered in OUT is the culprit.
+    // --geolab-run-all LIST OUT: the same, but every listed test runs, failures or not (the independence check
+    // of the course's own code, which stubs one file of the reference).
     for (int i = 1; i + 2 < argc; ++i) {
-        if (std::strcmp(argv[i], "--geolab-run-seq") != 0) continue;
+        const bool run_all = std::strcmp(argv[i], "--geolab-run-all") == 0;
+        if (!run_all && std::strcmp(argv[i], "--geolab-run-seq") != 0) continue;
         std::ifstream list(argv[i + 1]);
         g_seq_fd = ::open(argv[i + 2], O_WRONLY | O_CREAT | O_TRUNC | O_APPEND | O_CLOEXEC, 0644);
         if (!list || g_seq_fd < 0) {
@@ -393,11 +413,12 @@ int main(int argc, char** argv) {
             context.clearFilters();
             context.applyCommandLine(5, args);
             g_seq_passed = false;
+            g_seq_start = std::chrono::steady_clock::now();
             context.run();
             const itimerval off{};
             ::setitimer(ITIMER_REAL, &off, nullptr);
             std::cout.flush();
-            if (!g_seq_passed) break;
+            if (!g_seq_passed && !run_all) break;
         }
         ::close(g_seq_fd);
         return 0;

@@ -5,6 +5,7 @@
 
 #include "builder.hpp"
 #include "helpers.hpp"
+#include "geolab/grading/chain.hpp"
 
 using namespace lab01;
 
@@ -260,6 +261,7 @@ TEST_SUITE("Task 3: topology") {
 
 TEST_SUITE("Task 4: geometry") {
     TEST_CASE("geometry hidden: torus normals point away from the core circle and areas add up" * geolab::points(2) *
+              geolab::builds_on("Task 3") *
               geolab::hidden()) {
         const double R = 1.0, r = 0.35;
         const PolygonSoup soup = fx::torus(24, 12, R, r, true);
@@ -291,7 +293,7 @@ TEST_SUITE("Task 4: geometry") {
 
 TEST_SUITE("Task 5: smoothing") {
     TEST_CASE("smoothing hidden: several iterations on open and closed meshes match repeated Jacobi steps" *
-              geolab::points(3) * geolab::hidden()) {
+              geolab::points(3) * geolab::builds_on("Task 3") * geolab::hidden()) {
         for (const char* name : {"torus(8 x 6 triangles)", "grid(6 x 6) with two holes", "open box (5 quads)",
                                  "tetrahedron + isolated vertex", "house (quad + triangle)"}) {
             const Fixture f = fixture(name);

@@ -3,6 +3,7 @@
 #include <limits>
 
 #include "helpers.hpp"
+#include "geolab/grading/chain.hpp"
 
 using namespace lab03;
 
@@ -311,6 +312,7 @@ TEST_SUITE("Task 5: superquadrics") {
 
 TEST_SUITE("Task 6: tessellation") {
     TEST_CASE("tessellation hidden: random superquadrics and ellipsoids stay closed; outward; χ = 2" * geolab::points(2) *
+              geolab::builds_on("Task 5") *
               geolab::hidden() * geolab::hint("Odd grid sizes and extreme exponents too.")) {
         Rng rng(109);
         for (int n = 0; n < 15; ++n) {
@@ -338,6 +340,7 @@ TEST_SUITE("Task 6: tessellation") {
 
 TEST_SUITE("Task 7: images") {
     TEST_CASE("images hidden: a cylinder clipped by the box; seen through its open end" * geolab::points(2) *
+              geolab::builds_on("Task 4") *
               geolab::hidden() *
               geolab::hint("Take the first hit INSIDE the box: where the near side of the surface is clipped away, the "
                            "far side (seen from inside) shows.")) {

@@ -1,6 +1,7 @@
 // Lab 05 hidden tests: run by the grader, left out of the student release. Same tasks (suites), other inputs:
 // high degrees, far and tiny scales, the whole alphabet, the whole teapot tessellated, random knot vectors.
 #include "helpers.hpp"
+#include "geolab/grading/chain.hpp"
 
 using namespace lab05;
 
@@ -30,7 +31,7 @@ TEST_SUITE("Task 1: basics") {
 
 TEST_SUITE("Task 2: operations") {
     TEST_CASE("operations hidden: subdivision at random t reproduces the curve; elevation many times converges to it" *
-              geolab::points(3) * geolab::hidden() *
+              geolab::points(3) * geolab::builds_on("Task 1") * geolab::hidden() *
               geolab::hint("Both halves keep P's degree; left on [0, t], right on [t, 1]. Elevation never changes the "
                            "curve; its control polygon approaches it.")) {
         Rng rng(202);
@@ -67,6 +68,7 @@ TEST_SUITE("Task 2: operations") {
 
 TEST_SUITE("Task 3: measures") {
     TEST_CASE("measures hidden: a long curve at scale 1e6; loops for the closest point; a cusp" * geolab::points(3) *
+              geolab::builds_on("Task 1, Task 2") *
               geolab::hidden() *
               geolab::hint("Scale the tolerance logic with the curve; the closest point must be the global one.")) {
         Rng rng(203);
@@ -99,7 +101,8 @@ TEST_SUITE("Task 3: measures") {
 }
 
 TEST_SUITE("Task 4: composite curves") {
-    TEST_CASE("composite hidden: joints built at random; each class recognised" * geolab::points(2) * geolab::hidden() *
+    TEST_CASE("composite hidden: joints built at random; each class recognised" * geolab::points(2) *
+              geolab::builds_on("Task 2") * geolab::hidden() *
               geolab::hint("Gᵏ = Cᵏ⁻¹ + parallel k-th derivatives (same direction); Cᵏ needs equal ones.")) {
         Rng rng(204);
         for (int rep = 0; rep < 20; ++rep) {
@@ -122,6 +125,7 @@ TEST_SUITE("Task 4: composite curves") {
 
 TEST_SUITE("Task 5: tensor-product patches") {
     TEST_CASE("patches hidden: non-square degrees; u and v kept apart; normals of random patches" * geolab::points(3) *
+              geolab::builds_on("Task 1, Task 2") *
               geolab::hidden() *
               geolab::hint("P_ij = points[i (degree_v + 1) + j], i along u; S_u differentiates along i.")) {
         Rng rng(205);
@@ -140,7 +144,7 @@ TEST_SUITE("Task 5: tensor-product patches") {
 
 TEST_SUITE("Task 6: the Utah teapot") {
     TEST_CASE("teapot hidden: the whole teapot tessellated at n = 8: vertex count by an independent weld; outward" *
-              geolab::points(3) * geolab::hidden() *
+              geolab::points(3) * geolab::builds_on("Task 1, Task 2") * geolab::hidden() *
               geolab::hint("Weld border samples of all patches (also collapsed edges); drop triangles with a repeated "
                            "vertex; flip = true for outward.")) {
         const auto& T = teapot();

@@ -1,6 +1,7 @@
 // Lab 06 hidden tests: run by the grader, left out of the student release. Same tasks (suites) as the public ones,
 // other inputs: larger and random families, other helices (closed form −τ·s), curves checked against the RMF's ODE.
 #include "helpers.hpp"
+#include "geolab/grading/chain.hpp"
 
 using namespace lab06;
 
@@ -38,12 +39,15 @@ TEST_SUITE("Task 1: profiles") {
             l[0] = {-3, rng.uniform(-0.2, 0.2)};
             INFO("input: " << str(l));
             CHECK_MESSAGE(rejects({l, {}}), "a self-intersecting loop was accepted");
+            l[0] = {1.5, 0};  // back inside: a star again, which is valid ("reject everything" is not the contract)
+            CHECK_MESSAGE(!rejects({l, {}}), "a star was rejected");
         }
     }
 }
 
 TEST_SUITE("Task 2: triangulation") {
     TEST_CASE("hidden: large polygons with many holes; a spiral; grid profiles with many holes" * geolab::points(3) *
+              geolab::builds_on("Task 1") *
               geolab::hidden()) {
         Rng rng(603);
         auto check = [&](const Profile& p) {
@@ -70,7 +74,7 @@ TEST_SUITE("Task 2: triangulation") {
 
 TEST_SUITE("Task 3: extrusion") {
     TEST_CASE("hidden: twist up to 80° per step stays closed and unflipped; tilted directions keep V = A·h" *
-              geolab::points(3) * geolab::hidden()) {
+              geolab::points(3) * geolab::builds_on("Task 1, Task 2") * geolab::hidden()) {
         Rng rng(604);
         for (int k = 0; k < 6; ++k) {
             const Profile p = star_with_holes(rng, rng.integer(4, 12), k % 3);
@@ -90,7 +94,7 @@ TEST_SUITE("Task 3: extrusion") {
 
 TEST_SUITE("Task 4: revolution") {
     TEST_CASE("hidden: random profiles crossing the axis revolve to closed solids; partial turns of axis-touching "
-              "profiles with holes" * geolab::points(3) * geolab::hidden()) {
+              "profiles with holes" * geolab::points(3) * geolab::builds_on("Task 1, Task 2") * geolab::hidden()) {
         Rng rng(605);
         int done = 0;
         for (int k = 0; k < 40 && done < 8; ++k) {
@@ -157,11 +161,12 @@ TEST_SUITE("Task 5: frames") {
 
 TEST_SUITE("Task 6: sweeps") {
     TEST_CASE("hidden: the trefoil with a holed profile; check_sweep on helices (curvature radius (r² + h²)/r)" *
-              geolab::points(3) * geolab::hidden()) {
+              geolab::points(3) * geolab::builds_on("Task 1") * geolab::hidden()) {
         const Path path = trefoil_path(500, 1.5);
         const Profile p{circle_loop({0, 0}, 0.4, 12), {reversed(circle_loop({0, 0}, 0.2, 8))}};
-        const RmfResult r = rotation_minimizing_frames(path, glm::cross(path.tangents[0], glm::dvec3(1, 0, 0)));
-        const PolygonSoup m = sweep(p, path, r.frames);
+        // the frames are made here (helpers.hpp), not by your Task 5
+        const std::vector<Frame> frames = rmf_frames(path, glm::cross(path.tangents[0], glm::dvec3(1, 0, 0)));
+        const PolygonSoup m = sweep(p, path, frames);
         const std::string bad = surface_problem(m, 0, 2);
         CHECK_MESSAGE(bad.empty(), "a hollow trefoil tube: two embedded torus-like surfaces expected:" << bad);
         for (auto [rad, h] : {std::pair{1.0, 0.5}, std::pair{2.0, 1.0}, std::pair{0.5, 0.5}}) {

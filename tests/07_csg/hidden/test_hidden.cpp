@@ -1,6 +1,7 @@
 // Lab 07 hidden tests: run by the grader, left out of the student release. Same tasks (suites), same independent
 // references (helpers.hpp), other inputs.
 #include "../helpers.hpp"
+#include "geolab/grading/chain.hpp"
 
 using namespace lab07;
 
@@ -27,6 +28,7 @@ TEST_SUITE("Task 1: primitives") {
 
 TEST_SUITE("Task 2: signed distances") {
     TEST_CASE("sdf hidden: nested trees under rotations agree with min/max of the leaves" * geolab::points(3) *
+              geolab::builds_on("Task 1") *
               geolab::hidden() * geolab::hint("Recurse over the tree; each leaf in its own coordinates.")) {
         Rng rng(102);
         for (int n = 0; n < 20; ++n) {
@@ -53,6 +55,7 @@ TEST_SUITE("Task 2: signed distances") {
 
 TEST_SUITE("Task 3: point membership") {
     TEST_CASE("classify hidden: random trees of moved primitives against the definition" * geolab::points(3) *
+              geolab::builds_on("Task 1") *
               geolab::hidden() * geolab::hint("Points far from every surface are in or out exactly as the set says.")) {
         Rng rng(103);
         for (int n = 0; n < 15; ++n) {
@@ -102,6 +105,7 @@ TEST_SUITE("Task 4: spans in a primitive") {
 
 TEST_SUITE("Task 5: combining interval lists") {
     TEST_CASE("ray_spans hidden: random trees along random rays against the definition" * geolab::points(3) *
+              geolab::builds_on("Task 4") *
               geolab::hidden() * geolab::hint("Combine the children's lists at every inner node.")) {
         Rng rng(105);
         SpanLists lists;  // reused by every ray of every tree
@@ -121,7 +125,8 @@ TEST_SUITE("Task 5: combining interval lists") {
         }
     }
     TEST_CASE("ray_spans hidden: skipping by boxes never changes the spans (lines grazing the boxes too)" *
-              geolab::points(2) * geolab::hidden() *
+              geolab::points(2) *
+              geolab::builds_on("Task 4") * geolab::hidden() *
               geolab::hint("A node's box holds its whole solid: a line that misses it has no span there. Skip only "
                            "on line_meets_box, and for ∩ and − only after an empty A.")) {
         Rng rng(107);
@@ -174,6 +179,7 @@ TEST_SUITE("Task 5: combining interval lists") {
 
 TEST_SUITE("Task 6: ray casting") {
     TEST_CASE("first_hit hidden: a box minus an equal moved box; a sphere seen from inside" * geolab::points(2) *
+              geolab::builds_on("Task 4, Task 5") *
               geolab::hidden() * geolab::hint("Rays starting inside report the exit with the outward normal.")) {
         const glm::dmat4 M = rotate(33, glm::normalize(glm::dvec3(1, 2, 3))) * scale({1, 2, 0.5});
         const Tree b = leaf(Shape::box, glm::dvec3(1.0), M);
@@ -197,6 +203,7 @@ TEST_SUITE("Task 6: ray casting") {
 
 TEST_SUITE("Task 7: meshes and volumes") {
     TEST_CASE("mesh hidden: sphere minus a moved sphere and a torus: volumes converge" * geolab::points(2) *
+              geolab::builds_on("Task 1, Task 2") *
               geolab::hidden() * geolab::hint("The mesh must be closed and outward: pad the box.")) {
         // sphere r = 1 minus a sphere r = 1 centred at distance 1: the lens removed has volume 5π/12
         const Tree t = op(Op::subtract, leaf(Shape::sphere, {1, 0, 0}), leaf(Shape::sphere, {1, 0, 0}, translate({1, 0, 0})));

@@ -1,5 +1,6 @@
 // Lab 08 hidden tests: run by the grader, left out of the student release. Same tasks (suites) as the public ones,
 // same independent references (helpers.hpp): 128-bit indices, clipping, shapes' equations, formulas.
+#include "geolab/grading/chain.hpp"
 #include "helpers.hpp"
 
 using namespace lab08;
@@ -60,6 +61,7 @@ TEST_SUITE("Task 2: the triangle-box test") {
 
 TEST_SUITE("Task 3: surface voxelization") {
     TEST_CASE("surface hidden: quads; meshes across the grid's border; several threads" * geolab::points(3) *
+              geolab::builds_on("Task 2") *
               geolab::hidden() * geolab::hint("fan-triangulate faces; clip voxel ranges to [0, n − 1]; threads must not race")) {
         Rng rng(3);
         std::vector<PolygonSoup> keep;  // every mesh stays alive: the grader keys its digests by address and size
@@ -110,6 +112,10 @@ TEST_SUITE("Task 4: solid voxelization") {
             const BitGrid x = parity_fill(s, d, 0, 1), y = parity_fill(s, d, 1, 1), z = parity_fill(s, d, 2, 1);
             CHECK_MESSAGE(first_difference(y, x).empty(), "snapped sphere " << n << ": y vs x: " << first_difference(y, x));
             CHECK_MESSAGE(first_difference(z, x).empty(), "snapped sphere " << n << ": z vs x: " << first_difference(z, x));
+            int checked = 0;  // and x is the solid: every voxel centre off the surface, by the winding number
+            const std::string wrong = parity_spot_check(x, s, rng, -1, &checked);
+            CHECK_MESSAGE(wrong.empty(), "snapped sphere " << n << ", axis x against the winding number: " << wrong);
+            CHECK_MESSAGE(checked > 2000, "test self-check: only " << checked << " voxel centres off the surface");
             const SolidResult r = voxelize_solid(s, d, 2);
             CHECK(r.method == SolidMethod::parity);
             CHECK(r.axis_disagreements == 0);
@@ -117,12 +123,13 @@ TEST_SUITE("Task 4: solid voxelization") {
         }
     }
     TEST_CASE("solid hidden: elephant-with-holes goes through the flood fill" * geolab::points(2) * geolab::hidden() *
+              geolab::builds_on("Task 2, Task 3") *
               geolab::hint("boundary edges → flood_fill_solid of the surface, reported as SolidMethod::flood_fill")) {
         const PolygonSoup m = model_in_grid("elephant-with-holes", 40);
         const SolidResult r = voxelize_solid(m, {40, 40, 40}, 2);
         CHECK(r.method == SolidMethod::flood_fill);
         CHECK(r.boundary_edges == boundary_edges_by_map(m));
-        const BitGrid surface = voxelize_surface(m, {40, 40, 40}, 1);
+        const BitGrid surface = voxelize_surface(m, {40, 40, 40}, 1);  // the contract's solid of YOUR surface voxels
         check_grid(r.grid, expected_flood_fill(surface), "elephant-with-holes at 40³");
     }
 }

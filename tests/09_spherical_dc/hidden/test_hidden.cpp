@@ -1,5 +1,6 @@
 // Lab 09 hidden tests: run by the grader, left out of the student release. Same tasks (suites) as the public ones.
 #include "helpers.hpp"
+#include "geolab/grading/chain.hpp"
 
 using namespace lab09;
 
@@ -147,7 +148,7 @@ TEST_CASE("build_octree hidden: a tiny sphere between lattice corners; a field w
 TEST_SUITE("Task 4: vertex placement") {
 
 TEST_CASE("place_vertices hidden: torus vertices lie near the surface; QEF mass points in their cells" *
-          geolab::points(2) * geolab::hidden() *
+          geolab::points(2) * geolab::builds_on("Task 1, Task 2") * geolab::hidden() *
           geolab::hint("Crossings within the tolerance, unit normals, the QEF about the mass point of the cell's "
                        "crossings (which lie on the cell's edges).")) {
     const FieldPtr f = geolab::torus({0.02, -0.01, 0.03}, 0.6, 0.25);
@@ -176,7 +177,7 @@ TEST_CASE("place_vertices hidden: torus vertices lie near the surface; QEF mass 
 TEST_SUITE("Task 5: simplification") {
 
 TEST_CASE("simplify hidden: a moderate tolerance merges curved regions and keeps the sphere closed" *
-          geolab::points(1) * geolab::hidden() *
+          geolab::points(1) * geolab::builds_on("Task 1, Task 2") * geolab::hidden() *
           geolab::hint("With tolerance 0.05 h some sphere cells merge; the result must stay a closed manifold with "
                        "each vertex in its (coarser) cell.")) {
     const FieldPtr f = geolab::sphere({0.03, 0.0, -0.02}, 0.8);
@@ -201,7 +202,7 @@ TEST_CASE("simplify hidden: a moderate tolerance merges curved regions and keeps
 }
 
 TEST_CASE("simplify hidden: rounded box; CSG and torus stay closed 2-manifolds at tolerances 0.05 to 0.5 h" *
-          geolab::points(1) * geolab::hidden() *
+          geolab::points(1) * geolab::builds_on("Task 1, Task 2") * geolab::hidden() *
           geolab::hint("All of Ju et al.'s sign tests (one sheet; edge midpoints, face centres and the cell centre "
                        "agree with a corner of their feature) and the minimiser-in-the-cell test: a larger tolerance "
                        "lets more cells merge, never one that changes the topology.")) {
@@ -235,7 +236,7 @@ TEST_CASE("simplify hidden: rounded box; CSG and torus stay closed 2-manifolds a
 TEST_SUITE("Task 6: contouring polygons") {
 
 TEST_CASE("contour hidden: an adaptive tree (leaves of several levels) gives a closed oriented mesh" *
-          geolab::points(1) * geolab::hidden() *
+          geolab::points(1) * geolab::builds_on("Task 1, Task 2") * geolab::hidden() *
           geolab::hint("Around a minimal edge the 4 quadrant leaves may be coarser than the edge's leaf: drop "
                        "repeated leaves (a triangle), and emit the edge only from a leaf no finer neighbour "
                        "subdivides.")) {
@@ -274,7 +275,7 @@ TEST_CASE("contour hidden: an adaptive tree (leaves of several levels) gives a c
 }
 
 TEST_CASE("contour hidden: a spherical tree with leaves of levels 3 to 5 around the surface is closed and oriented" *
-          geolab::points(1) * geolab::hidden() *
+          geolab::points(1) * geolab::builds_on("Task 1, Task 2, Task 11") * geolab::hidden() *
           geolab::hint("Spherical trees can be adaptive too: coarse leaves at a sign change get a vertex (their own "
                        "edges' crossings), and around a minimal edge the quadrant leaves may be coarser: drop repeats "
                        "(a triangle), emit from a leaf no finer one subdivides, wrap phi at the seam. Pole rings may "
@@ -390,6 +391,7 @@ TEST_CASE("contour hidden: spherical trees (uniform; levels varying with r; thet
 TEST_SUITE("Task 7: Cartesian one-shot") {
 
 TEST_CASE("bunny hidden: Cartesian levels 5 and 6: no hole; oriented; close to the mesh" * geolab::points(2) *
+          geolab::whole_chain() *
           geolab::hidden() * geolab::time_limit(60) *
           geolab::hint("MeshField gives the signed distance to the bunny (Lipschitz 1); the pipeline is the same as "
                        "for analytic fields.")) {
@@ -404,6 +406,7 @@ TEST_CASE("bunny hidden: Cartesian levels 5 and 6: no hole; oriented; close to t
 }
 
 TEST_CASE("lion hidden: Cartesian level 5 is closed although the input mesh has holes" * geolab::points(1) *
+          geolab::whole_chain() *
           geolab::hidden() * geolab::time_limit(60) *
           geolab::hint("The winding-number sign of MeshField closes the lion's 5 boundary loops; the octree's "
                        "samples decide inside/outside consistently, so the output has no boundary.")) {
@@ -509,7 +512,8 @@ TEST_CASE("correct_origin hidden: on the surface the side with the larger probe 
 TEST_SUITE("Task 10: spherical octree") {
 
 TEST_CASE("dual_contour_spherical hidden: sphere vertices at level 8 within 0.02 unit of the surface" *
-          geolab::points(1) * geolab::hidden() *
+          geolab::points(1) *
+          geolab::builds_on("Task 1, Task 2, Task 4, Task 5, Task 6, Task 8, Task 9, Task 11") * geolab::hidden() *
           geolab::hint("Reference: max|f| = 0.012 unit at level 8 (unit = largest extent / 2^L); spherical cells are "
                        "up to 2pi r / N wide, so the error is about 4x the Cartesian one. Arc crossings, not chords.")) {
     const FieldPtr f = geolab::sphere({0.0, 0.1, 0.0}, 0.8);
@@ -521,6 +525,7 @@ TEST_CASE("dual_contour_spherical hidden: sphere vertices at level 8 within 0.02
 }
 
 TEST_CASE("lion hidden: spherical levels 6 and 7 are closed although the input mesh has holes" * geolab::points(1) *
+          geolab::whole_chain() *
           geolab::hidden() * geolab::time_limit(120) *
           geolab::hint("The lion's holes make the winding-number sign jump on caps far from the mesh; without "
                        "Octree::refine_around_sign_changes the ball test leaves coarse leaves there (and around "
@@ -544,6 +549,7 @@ TEST_CASE("lion hidden: spherical levels 6 and 7 are closed although the input m
 }
 
 TEST_CASE("bunny hidden: spherical levels 5 and 6: no hole; oriented; close to the mesh" * geolab::points(2) *
+          geolab::builds_on("Task 1, Task 2, Task 4, Task 5, Task 6, Task 8, Task 9, Task 11") *
           geolab::hidden() * geolab::time_limit(60) *
           geolab::hint("Same checks as the Cartesian bunny; the poles are filled (normal projection).")) {
     const PolygonSoup input = load_model("bunny00");
@@ -566,6 +572,7 @@ TEST_CASE("bunny hidden: spherical levels 5 and 6: no hole; oriented; close to t
 TEST_SUITE("Task 11: poles") {
 
 TEST_CASE("poles hidden: an axis crossing the surface four times gives four rings; all closed" * geolab::points(2) *
+          geolab::whole_chain() *
           geolab::hidden() *
           geolab::hint("Every sign-changing radial edge on the axis is a ring, not only the first one per pole.")) {
     const FieldPtr f = geolab::csg_union(geolab::sphere({0, 0, 0.6}, 0.4), geolab::sphere({0, 0, -0.6}, 0.4));

@@ -96,3 +96,28 @@ std::vector<int> replay_fixture::walk_forever(int x) {
     while (seen.size() < seen.max_size()) seen.push_back(x);  // never gets back to where it started
     return seen;
 }
+geolab::PolygonSoup replay_fixture::long_face(int) {
+    geolab::PolygonSoup s;
+    s.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    s.indices = {0, 1, 2};
+    s.offsets = {0, 3, 1u << 28};
+    return s;
+}
+geolab::PolygonSoup replay_fixture::bad_index_soup(int) {
+    geolab::PolygonSoup s;
+    s.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    s.add_face({0, 1, 5});
+    return s;
+}
+geolab::render::Image replay_fixture::short_image(int w) {
+    geolab::render::Image img;
+    img.width = img.height = w;
+    img.rgba = {1, 2, 3, 4};
+    return img;
+}
+void replay_fixture::fill_soup(int x, std::vector<geolab::PolygonSoup>& out) {
+    out.clear();
+    out.push_back(bad_index_soup(x));
+    out.back().indices.back() = 2;
+    out.push_back(long_face(x));
+}

@@ -79,3 +79,23 @@ TEST_CASE("changing the test's data shows as different arguments" * geolab::poin
     CHECK(poke(v) == 3);  // the performer's v was cleared by the first call; the judge's was not
 }
 }
+// Answers whose own invariants are broken: code in the judge that walks them would read outside them.
+TEST_CASE("a soup whose face runs past its indices is refused" * geolab::points(1)) {
+    const geolab::PolygonSoup s = long_face(1);
+    std::size_t n = 0;
+    for (std::size_t f = 0; f < s.n_faces(); ++f) n += s.face(f).size();
+    CHECK(n == 3);
+}
+TEST_CASE("a soup whose index names no position is refused" * geolab::points(1)) {
+    CHECK(bad_index_soup(1).positions.size() == 3);
+}
+TEST_CASE("an image shorter than its size is refused" * geolab::points(1)) {
+    const geolab::render::Image img = short_image(64);
+    CHECK(img.pixel(63, 63)[0] == 0);
+}
+TEST_CASE("a broken soup in an out-argument is refused" * geolab::points(1)) {
+    std::vector<geolab::PolygonSoup> out;
+    fill_soup(1, out);
+    CHECK(out.size() == 2);
+}
+

@@ -41,6 +41,8 @@
 #include "geolab/boundary.hpp"
 #include "geolab/field.hpp"
 #include "geolab/grading/wire.hpp"
+#include "geolab/render/image.hpp"
+#include "geolab/soup.hpp"
 
 namespace geolab::boundary {
 struct CallContext;
@@ -73,7 +75,7 @@ struct Channel {
     std::unique_ptr<wire::Reader> reader;
     std::uint32_t calls = 0;  //!< depth-0 calls made so far
     int depth = 0;            //!< record: how many recorded calls are running (student code on the stack)
-    const char* last_function = "";  //!< the function of the last depth-0 call
+    const char* last_function = "";  //!< the function of the last depth-0 call (off: of the last call a test made)
     bool timed_next = false;         //!< the next depth-0 call is timed
     double timed_seconds = -1;       //!< replay: the judge's measurement of the last timed call
     std::chrono::steady_clock::time_point go_time;
@@ -336,6 +338,99 @@ void out_key(std::vector<std::string>& keys, A& a) {
 [[noreturn]] void argument_mismatch(std::size_t index, bool member);
 
 
+// ---- answers the judge may use: invariants its code relies on ------------------------------------------------
+// The judge's standard library checks every index into a container (_GLIBCXX_ASSERTIONS), but some accessors that
+// tests call on an answer compute addresses themselves: PolygonSoup::face() spans indices[offsets[f]..offsets[f+1]),
+// render::Image::pixel() reads rgba at 4·(y·width + x), and lib code (built without the assertions) indexes a
+// soup's positions by its indices. A hostile answer there would make the judge read memory outside the answer.
+// So every answer is checked as it is read, through its fields, vectors, optionals, pairs, tuples and arrays; one
+// that breaks such an invariant is a malformed answer (the test fails, naming the problem).
+
+//! Why `s` cannot be a polygon soup (empty: it can): offsets must start at 0, never decrease and end at the number
+//! of indices; every index must name a position.
+std::string soup_problem(const PolygonSoup& s);
+//! Why `img` cannot be an image (empty: it can): width, height ≥ 0 and rgba.size() = 4 · width · height.
+std::string image_problem(const render::Image& img);
+
+template <class T>
+struct is_std_vector : std::false_type {};
+template <class T, class A>
+struct is_std_vector<std::vector<T, A>> : std::true_type {};
+template <class T>
+struct is_std_optional : std::false_type {};
+template <class T>
+struct is_std_optional<std::optional<T>> : std::true_type {};
+template <class T>
+struct is_std_array : std::false_type {};
+template <class T, std::size_t N>
+struct is_std_array<std::array<T, N>> : std::true_type {};
+template <class T>
+struct is_pair_or_tuple : std::false_type {};
+template <class A, class B>
+struct is_pair_or_tuple<std::pair<A, B>> : std::true_type {};
+template <class... A>
+struct is_pair_or_tuple<std::tuple<A...>> : std::true_type {};
+
+//! Whether a T may hold a soup or an image (the only types with such invariants): the others are not walked.
+template <class T>
+constexpr bool may_break();
+template <class Tuple, std::size_t... I>
+constexpr bool any_may_break(std::index_sequence<I...>) {
+    return (false || ... || may_break<std::remove_cvref_t<std::tuple_element_t<I, Tuple>>>());
+}
+template <class T>
+constexpr bool may_break() {
+    if constexpr (std::is_same_v<T, PolygonSoup> || std::is_same_v<T, render::Image>) {
+        return true;
+    } else if constexpr (is_std_vector<T>::value || is_std_array<T>::value || is_std_optional<T>::value) {
+        return may_break<typename T::value_type>();
+    } else if constexpr (is_pair_or_tuple<T>::value) {
+        return any_may_break<T>(std::make_index_sequence<std::tuple_size_v<T>>{});
+    } else if constexpr (requires(const T& v) { v.geolab_fields(); }) {
+        using Fields = decltype(std::declval<const T&>().geolab_fields());
+        return any_may_break<Fields>(std::make_index_sequence<std::tuple_size_v<Fields>>{});
+    } else {
+        return false;
+    }
+}
+
+//! The first broken invariant in an answer read from the recording (see above), or "".
+template <class T>
+std::string answer_problem(const T& v) {
+    if constexpr (!may_break<T>()) {
+        return "";
+    } else if constexpr (std::is_same_v<T, PolygonSoup>) {
+        return soup_problem(v);
+    } else if constexpr (std::is_same_v<T, render::Image>) {
+        return image_problem(v);
+    } else if constexpr (is_std_vector<T>::value || is_std_array<T>::value) {
+        using E = typename T::value_type;
+        if constexpr (std::is_class_v<E> && !std::is_same_v<E, std::string>)
+            for (const auto& x : v)
+                if (std::string why = answer_problem(x); !why.empty()) return why;
+        return "";
+    } else if constexpr (is_std_optional<T>::value) {
+        return v ? answer_problem(*v) : std::string();
+    } else if constexpr (is_pair_or_tuple<T>::value) {
+        std::string why;
+        std::apply([&](const auto&... x) { ((why.empty() ? (void)(why = answer_problem(x)) : (void)0), ...); }, v);
+        return why;
+    } else if constexpr (requires { v.geolab_fields(); }) {
+        std::string why;
+        std::apply([&](const auto&... x) { ((why.empty() ? (void)(why = answer_problem(x)) : (void)0), ...); },
+                   v.geolab_fields());
+        return why;
+    } else {
+        return "";
+    }
+}
+//! Judge: reads an answer and checks it (a broken invariant is a malformed recording).
+template <class T>
+void read_answer(wire::Reader& r, T& v) {
+    wire::read(r, v);
+    if (std::string why = answer_problem(v); !why.empty()) r.fail("an answer that breaks its type's invariants: " + why);
+}
+
 template <class A>
 void write_out(wire::Writer& w, A& a) {
     if constexpr (is_out_ref<A>) {
@@ -360,11 +455,11 @@ void clear_out(A& a) {
 template <class A>
 void read_out(wire::Reader& r, A& a) {
     if constexpr (is_out_ref<A>) {
-        wire::read(r, a);
+        read_answer(r, a);
     } else if constexpr (is_out_ptr<A>) {
         const bool present = r.u8() != 0;
         if (present != (a != nullptr)) throw wire::Error(wire::Error::malformed, "an out-pointer that was null");
-        if (a) wire::read(r, *a);
+        if (a) read_answer(r, *a);
     }
 }
 template <class A>
@@ -385,7 +480,10 @@ struct Impl {
     template <class Invoke>
     static R record(const char* name, Invoke&& invoke, P... p) {
         Channel& ch = channel();
-        if (ch.mode != Channel::Mode::record || ch.depth > 0) return invoke(std::forward<P>(p)...);
+        if (ch.mode != Channel::Mode::record || ch.depth > 0) {
+            if (ch.mode == Channel::Mode::off) ch.last_function = name;  // the test's last call (the course's own runs)
+            return invoke(std::forward<P>(p)...);
+        }
         const std::uint32_t n = ++ch.calls;
         ch.last_function = name;
         if (ch.timed_next) {
@@ -527,7 +625,7 @@ struct Impl {
             (out_key<P>(out_keys, p), ...);
             const std::uint8_t outcome = replay_events(r);
             if (outcome == 0) {
-                if constexpr (!std::is_void_v<R>) wire::read(r, value);
+                if constexpr (!std::is_void_v<R>) read_answer(r, value);
             } else {
                 thrown = read_exception(r);
             }

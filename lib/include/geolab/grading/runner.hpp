@@ -32,6 +32,9 @@ struct TestInfo {
     bool hidden = false;
     std::string hint;
     double timeout_s = 0;  //!< 0: RunOptions::timeout_s
+    //! The tasks this test may depend on besides its own, by declaration (grading/chain.hpp): "Task 2, Task 3",
+    //! "*" for a whole-chain test, "" for none. Only the independence check reads it.
+    std::string builds_on;
 };
 
 //! The outcome of one test case.

@@ -6,6 +6,8 @@
 #include <vector>
 
 #include "geolab/boundary.hpp"
+#include "geolab/render/image.hpp"
+#include "geolab/soup.hpp"
 
 namespace replay_fixture {
 
@@ -56,6 +58,10 @@ private:
 };
 double sum_calls(Fn f, int n);                 // f(0) + ... + f(n - 1)
 int poke(const std::vector<int>& v);           // returns v.size(), but first clears the test's vector (const cast)
+geolab::PolygonSoup long_face(int x);          // 3 positions, offsets {0, 3, 2^28}: face 1 spans far past the indices
+geolab::PolygonSoup bad_index_soup(int x);     // a triangle {0, 1, 5} of 3 positions
+geolab::render::Image short_image(int w);      // w x w pixels with the bytes of one
+void fill_soup(int x, std::vector<geolab::PolygonSoup>& out);  // out = {a good soup, long_face(x)}
 
 // GIVEN: inc(inc(x)) (given code calls the student's inc).
 int twice_inc(int x);
@@ -87,6 +93,10 @@ GEOLAB_BOUNDARY(Acc::add, void (Acc::*)(int))
 GEOLAB_BOUNDARY(Acc::get, int (Acc::*)() const)
 GEOLAB_BOUNDARY(sum_calls, double(Fn, int))
 GEOLAB_BOUNDARY(poke, int(const std::vector<int>&))
+GEOLAB_BOUNDARY(long_face, geolab::PolygonSoup(int))
+GEOLAB_BOUNDARY(bad_index_soup, geolab::PolygonSoup(int))
+GEOLAB_BOUNDARY(short_image, geolab::render::Image(int))
+GEOLAB_BOUNDARY(fill_soup, void(int, std::vector<geolab::PolygonSoup>&))
 #endif
 
 }  // namespace replay_fixture

@@ -1,0 +1,13 @@
+// ADVERSARIAL CASE trivial_answers: every function of lab 02 returns a default value of its type (an empty grid, a
+// zero, an empty list) or does nothing, and never throws. Honest: 0 (no task is done); a test that passes here
+// asserts nothing a non-answer cannot satisfy. Generated from the stub by replacing its throw with `return {};`.
+// Task 5: the boundary surface (handout §7).
+#include "geolab/halfface.hpp"
+
+namespace geolab::halfface {
+
+PolygonSoup boundary_surface(const Mesh& mesh) {
+    return {};
+}
+
+}  // namespace geolab::halfface
