@@ -235,7 +235,7 @@ TEST_SUITE("Task 4: solid voxelization") {
     // The open-mesh path is flood_fill_solid of voxelize_surface by the contract: your voxelize_solid calls your
     // surface voxelization (Task 3, which applies Task 2's rule), so this test builds on those tasks.
     TEST_CASE("solid: voxelize_solid uses the flood fill of the surface on open meshes" * geolab::points(1) *
-              geolab::builds_on("Task 2, Task 3") *
+              geolab::builds_on("Task 3") *
               geolab::hint("count_boundary_edges > 0 → flood_fill_solid of the surface voxels; report which")) {
         const Dims d{12, 12, 12};
         // a cube [2, 8]³ whose top face has a hole much smaller than a voxel: the surface voxels close it

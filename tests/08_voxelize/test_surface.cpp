@@ -25,7 +25,7 @@ BitGrid shell(Dims d, std::int64_t a, std::int64_t b) {
 // voxelize_surface applies triangle_overlaps_voxel's rule (its contract): your surface voxelization calls your
 // Task 2, so the tests that voxelize something build on it (geolab/grading/chain.hpp).
 TEST_SUITE("Task 3: surface voxelization") {
-    TEST_CASE("surface: a cube on voxel boundaries gets no extra layer" * geolab::points(2) * geolab::builds_on("Task 2") *
+    TEST_CASE("surface: a cube on voxel boundaries gets no extra layer" * geolab::points(2) *
               geolab::hint("a face in the plane x = m belongs to the layer behind its normal only (Task 2's rule)")) {
         const Dims d{10, 10, 10};
         check_grid(voxelize_surface(box_mesh({2, 2, 2}, {6, 6, 6}), d, 1), shell(d, 2, 5), "outward cube [2, 6]³");
@@ -46,7 +46,7 @@ TEST_SUITE("Task 3: surface voxelization") {
         });
         check_grid(voxelize_surface(box_mesh({1, 1, 1}, {8, 5, 3}), e, 1), want, "box [1,8]x[1,5]x[1,3] in 9 x 6 x 4");
     }
-    TEST_CASE("surface: the grid's far faces" * geolab::points(2) * geolab::builds_on("Task 2") *
+    TEST_CASE("surface: the grid's far faces" * geolab::points(2) *
               geolab::hint("voxel ranges end at n − 1: a mesh on the far face x = n belongs to layer n − 1")) {
         for (std::int64_t n : {3, 8, 13}) {
             const Dims d{n, n, n};
@@ -61,7 +61,7 @@ TEST_SUITE("Task 3: surface voxelization") {
         const PolygonSoup far = box_mesh({1.25, 1.25, 5.5}, {4.75, 4.75, 9});
         check_grid(voxelize_surface(far, d, 1), expected_surface(far, d), "a box through the far face z = 6");
     }
-    TEST_CASE("surface: spheres and octahedra agree with the rule voxel by voxel" * geolab::points(2) * geolab::builds_on("Task 2") *
+    TEST_CASE("surface: spheres and octahedra agree with the rule voxel by voxel" * geolab::points(2) *
               geolab::hint("every voxel of each triangle's bounding box, tested with triangle_overlaps_voxel")) {
         struct C {
             PolygonSoup s;
@@ -74,7 +74,7 @@ TEST_SUITE("Task 3: surface voxelization") {
                            C{icosphere({2, 2, 2}, 7, 1), {8, 8, 8}, "a sphere larger than the grid"}})
             check_grid(voxelize_surface(c.s, c.d, 1), expected_surface(c.s, c.d), c.what);
     }
-    TEST_CASE("surface: 2; 3 and 8 threads give exactly the 1-thread grid (bunny00; 96³)" * geolab::points(2) * geolab::builds_on("Task 2") *
+    TEST_CASE("surface: 2; 3 and 8 threads give exactly the 1-thread grid (bunny00; 96³)" * geolab::points(2) *
               geolab::time_limit(60) *
               geolab::hint("threads that OR bits into the same 64-bit word race: use std::atomic_ref's fetch_or, or give "
                            "each thread whole words")) {
