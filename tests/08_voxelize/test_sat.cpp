@@ -91,6 +91,14 @@ TEST_SUITE("Task 2: the triangle-box test") {
         check({glm::dvec3(-1, 0.5, 0.5), glm::dvec3(2, 0.5, 0.5), glm::dvec3(0.5, 0.5, 2)}, 0, 0, 0, true, "a triangle through the centre");
         check({glm::dvec3(-1, 1, 0.5), glm::dvec3(2, 1, 0.5), glm::dvec3(0.5, 2, 0.5)}, 0, 0, 0, false, "edge along the face y = 1, outside");
         check({glm::dvec3(-1, 1, 0.5), glm::dvec3(2, 1, 0.5), glm::dvec3(0.5, 0, 0.5)}, 0, 0, 0, true, "edge along the face y = 1, inside");
+        // the same contacts from the other side (the projections end exactly where the box's begin)
+        check({glm::dvec3(1, 0.2, 0.2), glm::dvec3(0, 0.5, 0.2), glm::dvec3(0.5, 0.5, 0.9)}, 1, 0, 0, false, "touches face x = 1 of voxel (1,0,0) from below");
+        check({glm::dvec3(0.2, 2, 0.2), glm::dvec3(0.5, 1, 0.2), glm::dvec3(0.8, 1.5, 0.9)}, 0, 2, 0, false, "touches face y = 2 of voxel (0,2,0) from below");
+        check({glm::dvec3(0.2, 0.3, 0), glm::dvec3(0.5, 0.8, -1), glm::dvec3(0.8, 0.4, 0)}, 0, 0, 0, false, "touches face z = 0 from below along an edge");
+        check({glm::dvec3(3, 0, 0), glm::dvec3(0, 0, 3), glm::dvec3(0, 3, 0)}, 0, 0, 0, false, "x+y+z = 3 (normal -(1,1,1)) touches the corner (1,1,1)");
+        check({glm::dvec3(0, 2, 1.5), glm::dvec3(2, 0, 1.5), glm::dvec3(0, 0, 1.5)}, 1, 1, 1, false,
+              "in the plane z = 1.5, its edge x+y = 2 touches the box edge x = y = 1 (only the axis z x (1,-1,0) separates)");
+        check({glm::dvec3(0, 2, 1.5), glm::dvec3(2.01, 0, 1.5), glm::dvec3(0, 0, 1.5)}, 1, 1, 1, true, "the same edge moved 0.005 into the box");
     }
     TEST_CASE("triangle-box: a triangle in a voxel plane belongs to the layer behind its normal" * geolab::points(2) *
               geolab::hint("all three x equal to an integer m: normal +x → layer m − 1, normal −x → layer m; in the plane, "
@@ -110,6 +118,13 @@ TEST_SUITE("Task 2: the triangle-box test") {
         const Tri py = {glm::dvec3(0, 5, 0), glm::dvec3(0, 5, 1), glm::dvec3(1, 5, 0)};  // normal (0,0,1)x(1,0,0) = +y
         check(py, 0, 4, 0, true, "y = 5, normal +y");
         check(py, 0, 5, 0, false, "y = 5, normal +y");
+        // the normal's sign from (b − a) × (c − a) with vertices far from the origin
+        const Tri f1 = {glm::dvec3(0, 5, 1), glm::dvec3(1, 5, 1), glm::dvec3(1, 6, 1)};  // normal +z
+        check(f1, 0, 5, 0, true, "z = 1, normal +z, y from 5 to 6");
+        check(f1, 0, 5, 1, false, "z = 1, normal +z, y from 5 to 6");
+        const Tri f2 = {glm::dvec3(5, 0, 1), glm::dvec3(5, 1, 1), glm::dvec3(4, 1, 1)};  // normal +z
+        check(f2, 4, 0, 0, true, "z = 1, normal +z, x from 4 to 5");
+        check(f2, 4, 0, 1, false, "z = 1, normal +z, x from 4 to 5");
         // not on a voxel plane: an ordinary open test
         const Tri half = {glm::dvec3(3.5, 0.2, 0.2), glm::dvec3(3.5, 0.8, 0.2), glm::dvec3(3.5, 0.5, 0.9)};
         check(half, 3, 0, 0, true, "x = 3.5");

@@ -91,6 +91,9 @@ TEST_SUITE("Task 4: solid voxelization") {
         }
         CHECK_THROWS_AS(parity_fill_layers(cube, {4, 4, 4}, 3, 0, 4, 1), std::invalid_argument);
         CHECK_THROWS_AS(parity_fill_layers(cube, {4, 4, 4}, 0, 0, 4, 0), std::invalid_argument);
+        CHECK_THROWS_AS(parity_fill_layers(cube, {4, 4, 64}, 2, 0, 64, 0), std::invalid_argument);
+        check_grid(parity_fill_layers(box_mesh({0.2, 0.3, 0.1}, {0.9, 0.8, 0.7}), {1, 1, 1}, 2, 0, 1, 1),
+                   box_solid({1, 1, 1}, {0.2, 0.3, 0.1}, {0.9, 0.8, 0.7}), "a 1 x 1 x 1 grid, box [0.2,0.9]x[0.3,0.8]x[0.1,0.7], axis 2");
     }
     TEST_CASE("solid: tall grids and long rows (faces on many layer planes; 1; 2 and 4 threads)" * geolab::points(1) *
               geolab::hint("however the work is split, every column gets every flip, and the prefix XOR runs along the "
@@ -100,7 +103,9 @@ TEST_SUITE("Task 4: solid voxelization") {
             BitGrid want;
             std::string what;
         };
-        const Dims tall{8, 8, 64}, wide{130, 5, 6}, odd{65, 2, 5}, odd2{63, 3, 4};
+        // 65 x 33 and 63 x 33: rows start one bit past a word (a 64-bit piece reaches into the next word), and some
+        // rows start at a word while the row before does not (rows 64 and 65 of 65 x 33, 64 of 63 x 33)
+        const Dims tall{8, 8, 64}, wide{130, 5, 6}, odd{65, 2, 5}, odd2{63, 3, 4}, odd3{65, 33, 2}, odd4{63, 33, 2};
         for (const C& c : {C{box_mesh({1, 1, 8}, {7, 7, 16}), box_solid(tall, {1, 1, 8}, {7, 7, 16}), "box [1,7]x[1,7]x[8,16] in 8 x 8 x 64"},
                            C{box_mesh({2, 1.5, 16.5}, {6.5, 7, 48}), box_solid(tall, {2, 1.5, 16.5}, {6.5, 7, 48}), "box [2,6.5]x[1.5,7]x[16.5,48]"},
                            C{box_mesh({0, 0, -5}, {8, 8, 70}), box_solid(tall, {0, 0, -5}, {8, 8, 70}), "a box around the whole grid"},
@@ -108,10 +113,15 @@ TEST_SUITE("Task 4: solid voxelization") {
                            C{box_mesh({1.5, 1, 1}, {128.5, 4, 5}), box_solid(wide, {1.5, 1, 1}, {128.5, 4, 5}), "box [1.5,128.5]x[1,4]x[1,5] in 130 x 5 x 6"},
                            C{box_mesh({-3, 1, 1}, {64, 4, 5}), box_solid(wide, {-3, 1, 1}, {64, 4, 5}), "box [-3,64]x[1,4]x[1,5] in 130 x 5 x 6"},
                            C{box_mesh({2, 0.5, 1}, {60, 1.5, 4}), box_solid(odd, {2, 0.5, 1}, {60, 1.5, 4}), "box [2,60]x[0.5,1.5]x[1,4] in 65 x 2 x 5"},
-                           C{box_mesh({1, 0.5, 0}, {62, 2, 3}), box_solid(odd2, {1, 0.5, 0}, {62, 2, 3}), "box [1,62]x[0.5,2]x[0,3] in 63 x 3 x 4"}})
-            for (int axis = 0; axis < 3; ++axis)
-                for (int t : {1, 2, 4})
+                           C{box_mesh({1, 0.5, 0}, {62, 2, 3}), box_solid(odd2, {1, 0.5, 0}, {62, 2, 3}), "box [1,62]x[0.5,2]x[0,3] in 63 x 3 x 4"},
+                           C{box_mesh({1.2, 0.2, 0.2}, {63.2, 32.8, 1.8}), box_solid(odd3, {1.2, 0.2, 0.2}, {63.2, 32.8, 1.8}), "box [1.2,63.2]x[0.2,32.8]x[0.2,1.8] in 65 x 33 x 2"},
+                           C{box_mesh({1.2, 0.2, 0.2}, {64.2, 32.8, 1.8}), box_solid(odd3, {1.2, 0.2, 0.2}, {64.2, 32.8, 1.8}), "box [1.2,64.2]x[0.2,32.8]x[0.2,1.8] in 65 x 33 x 2"},
+                           C{box_mesh({1.2, 0.2, 0.2}, {62.2, 32.8, 1.8}), box_solid(odd4, {1.2, 0.2, 0.2}, {62.2, 32.8, 1.8}), "box [1.2,62.2]x[0.2,32.8]x[0.2,1.8] in 63 x 33 x 2"}})
+            for (int t : {1, 2, 4}) {
+                for (int axis = 0; axis < 3; ++axis)
                     check_grid(parity_fill(c.s, c.want.dims, axis, t), c.want, c.what + ", axis " + std::to_string(axis) + ", " + std::to_string(t) + " thread(s)");
+                check_grid(voxelize_solid(c.s, c.want.dims, t).grid, c.want, c.what + ", voxelize_solid, " + std::to_string(t) + " thread(s)");
+            }
     }
     TEST_CASE("solid: a sphere's volume converges with resolution" * geolab::points(1) *
               geolab::hint("count · h³ → the enclosed volume; the error is about one layer of voxels, O(1/res)")) {
@@ -222,6 +232,31 @@ TEST_SUITE("Task 4: solid voxelization") {
         const BitGrid all = grid_of(d, [](std::int64_t, std::int64_t, std::int64_t) { return true; });
         check_grid(flood_fill_solid(border), all, "a shell on the grid's border");
         check_grid(flood_fill_solid(BitGrid(d)), BitGrid(d), "an empty grid");
+        // cups: every voxel of the grid's border except the inside of one face; the inside is reached through that
+        // face only, so the solid is the cup itself
+        const Dims c{6, 5, 4};
+        for (int face = 0; face < 6; ++face) {
+            const BitGrid cup = grid_of(c, [&](std::int64_t i, std::int64_t j, std::int64_t k) {
+                const std::int64_t x[3] = {i, j, k}, n[3] = {c.nx, c.ny, c.nz};
+                const int a = face / 2;
+                const std::int64_t at = face % 2 == 0 ? 0 : n[a] - 1;
+                bool border = false, inside_open = x[a] == at;
+                for (int e = 0; e < 3; ++e) {
+                    border = border || x[e] == 0 || x[e] == n[e] - 1;
+                    if (e != a) inside_open = inside_open && x[e] > 0 && x[e] < n[e] - 1;
+                }
+                return border && !inside_open;
+            });
+            check_grid(flood_fill_solid(cup), cup, "6 x 5 x 4: the border without the inside of face " +
+                                                       std::string(face % 2 == 0 ? "0" : "n - 1") + " along axis " + std::to_string(face / 2));
+        }
+        // 7 x 3 x 3 = 63 voxels: the whole border encloses its middle row; the last word's 64th bit stays 0
+        const Dims d63{7, 3, 3};
+        const BitGrid shell63 = grid_of(d63, [&](std::int64_t i, std::int64_t j, std::int64_t k) {
+            return i == 0 || j == 0 || k == 0 || i == 6 || j == 2 || k == 2;
+        });
+        check_grid(flood_fill_solid(shell63), grid_of(d63, [](std::int64_t, std::int64_t, std::int64_t) { return true; }),
+                   "7 x 3 x 3 (63 voxels), the whole border set");
     }
     TEST_CASE("solid: voxelize_solid uses parity on a closed mesh" * geolab::points(1) *
               geolab::hint("count_boundary_edges = 0 → the AND of the three parity fills; report which")) {
@@ -231,6 +266,11 @@ TEST_SUITE("Task 4: solid voxelization") {
         CHECK(c.boundary_edges == 0);
         CHECK(c.axis_disagreements == 0);
         check_grid(c.grid, octahedron_solid(d, {5.5, 5.5, 5.5}, 4), "closed octahedron");
+        // one voxel: a closed box around its centre fills it
+        const SolidResult one = voxelize_solid(box_mesh({0.2, 0.3, 0.1}, {0.9, 0.8, 0.7}), {1, 1, 1}, 1);
+        check_grid(one.grid, box_solid({1, 1, 1}, {0.2, 0.3, 0.1}, {0.9, 0.8, 0.7}), "a 1 x 1 x 1 grid, box [0.2,0.9]x[0.3,0.8]x[0.1,0.7]");
+        CHECK_THROWS_AS(voxelize_solid(octahedron({5.5, 5.5, 5.5}, 4), d, 0), std::invalid_argument);
+        CHECK_THROWS_AS(voxelize_solid(box_mesh({1, 1, 1}, {3, 3, 60}), {4, 4, 64}, 0), std::invalid_argument);
     }
     // The open-mesh path is flood_fill_solid of voxelize_surface by the contract: your voxelize_solid calls your
     // surface voxelization (Task 3, which applies Task 2's rule), so this test builds on those tasks.

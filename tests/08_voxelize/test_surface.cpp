@@ -73,6 +73,22 @@ TEST_SUITE("Task 3: surface voxelization") {
                            C{octahedron({4.5, 4.5, 4.5}, 3), {9, 9, 9}, "octahedron, vertices at voxel centres"},
                            C{icosphere({2, 2, 2}, 7, 1), {8, 8, 8}, "a sphere larger than the grid"}})
             check_grid(voxelize_surface(c.s, c.d, 1), expected_surface(c.s, c.d), c.what);
+        // single triangles with vertices on a half-voxel lattice: normals and edge axes with components 0 and ±1
+        // (the normal (1, 1, 1) among them)
+        const Dims d6{6, 6, 6};
+        PolygonSoup t111;
+        t111.positions = {{3, 2, 2}, {2, 3, 2}, {2, 2, 3}};
+        t111.add_face({0, 1, 2});
+        check_grid(voxelize_surface(t111, d6, 1), expected_surface(t111, d6), "triangle (3,2,2) (2,3,2) (2,2,3), normal (1,1,1)");
+        Rng rng(8);
+        for (int n = 0; n < 150; ++n) {
+            PolygonSoup t;
+            for (int v = 0; v < 3; ++v)
+                t.positions.push_back(glm::dvec3(rng.integer(1, 11), rng.integer(1, 11), rng.integer(1, 11)) * 0.5);
+            t.add_face({0, 1, 2});
+            check_grid(voxelize_surface(t, d6, 1), expected_surface(t, d6),
+                       "triangle " + str(t.positions[0]) + " " + str(t.positions[1]) + " " + str(t.positions[2]) + " in 6 x 6 x 6");
+        }
     }
     TEST_CASE("surface: 2; 3 and 8 threads give exactly the 1-thread grid (bunny00; 96³)" * geolab::points(2) *
               geolab::time_limit(60) *
@@ -169,5 +185,19 @@ TEST_SUITE("Task 3: surface voxelization") {
         CHECK_THROWS_AS(voxelize_surface(bad, {4, 4, 4}, 1), std::invalid_argument);
         const BitGrid empty = voxelize_surface(box_mesh({1, 1, 1}, {2, 2, 2}), {0, 0, 0}, 1);
         CHECK(empty.words.empty());
+        CHECK_THROWS_AS(voxelize_surface_layers(box_mesh({1, 1, 1}, {2, 2, 2}), {4, 4, 64}, 0, 64, 0), std::invalid_argument);
+        // a triangle of zero area (its vertices on a line) belongs to no voxel
+        PolygonSoup flat;
+        flat.positions = {{0.5, 0.5, 0.5}, {1.5, 1.5, 1.5}, {3.5, 3.5, 3.5}};
+        flat.add_face({0, 1, 2});
+        CHECK_MESSAGE(count_bits(voxelize_surface(flat, {4, 4, 4}, 1)) == 0,
+                      "the zero-area triangle (0.5,0.5,0.5) (1.5,1.5,1.5) (3.5,3.5,3.5): expected no voxels, got "
+                          << count_bits(voxelize_surface(flat, {4, 4, 4}, 1)));
+        // one voxel
+        PolygonSoup one;
+        one.positions = {{0.2, 0.3, 0.5}, {0.8, 0.4, 0.5}, {0.5, 0.9, 0.6}};
+        one.add_face({0, 1, 2});
+        CHECK_MESSAGE(count_bits(voxelize_surface(one, {1, 1, 1}, 1)) == 1,
+                      "a triangle inside the only voxel of a 1 x 1 x 1 grid: expected 1 voxel, got " << count_bits(voxelize_surface(one, {1, 1, 1}, 1)));
     }
 }

@@ -244,6 +244,8 @@ std::string encode_binvox(const Binvox& file);
 //! Reads the bytes of a .binvox file: first line "#binvox 1" (or 2: any non-zero value is a set voxel); then
 //! lines "dim d h w" (required, d = h = w ≥ 1), "translate tx ty tz" and "scale s" (optional, each at most once,
 //! any order; default 0 0 0 and 1), then "data"; then run-length pairs covering exactly n³ voxels, nothing after.
+//! A header line ends at "\n" (a "\r" before it is dropped) and has at most 256 bytes before its "\n"; its words
+//! are separated by spaces or tabs, with any before the first and after the last.
 //! Hostile input (a missing or repeated line, a bad number, a count 0, runs past n³ or short of it, a truncated
 //! pair, trailing bytes, non-cubic dims, a header that promises more voxels than its pairs can hold) throws
 //! geolab::IoError(name, line, reason) — line = the header line, or 0 in the data — before allocating the grid.
