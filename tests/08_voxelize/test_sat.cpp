@@ -140,5 +140,6 @@ TEST_SUITE("Task 2: the triangle-box test") {
               "a tiny triangle at the centre");
         check({glm::dvec3(0.2, 0.2, 0.2), glm::dvec3(0.4, 0.4, 0.4), glm::dvec3(0.9, 0.9, 0.8)}, 0, 0, 0, true,
               "almost collinear");
+        check({glm::dvec3(3, 2, 2), glm::dvec3(2, 3, 2), glm::dvec3(2, 2, 3)}, 2, 2, 2, true, "normal (1, 1, 1), through the voxel");
     }
 }

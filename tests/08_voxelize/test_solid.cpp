@@ -105,7 +105,7 @@ TEST_SUITE("Task 4: solid voxelization") {
         };
         // 65 x 33 and 63 x 33: rows start one bit past a word (a 64-bit piece reaches into the next word), and some
         // rows start at a word while the row before does not (rows 64 and 65 of 65 x 33, 64 of 63 x 33)
-        const Dims tall{8, 8, 64}, wide{130, 5, 6}, odd{65, 2, 5}, odd2{63, 3, 4}, odd3{65, 33, 2}, odd4{63, 33, 2};
+        const Dims tall{8, 8, 64}, wide{130, 5, 6}, odd{65, 2, 5}, odd2{63, 3, 4}, odd3{65, 33, 2}, odd4{63, 33, 2}, four{16, 16, 64};
         for (const C& c : {C{box_mesh({1, 1, 8}, {7, 7, 16}), box_solid(tall, {1, 1, 8}, {7, 7, 16}), "box [1,7]x[1,7]x[8,16] in 8 x 8 x 64"},
                            C{box_mesh({2, 1.5, 16.5}, {6.5, 7, 48}), box_solid(tall, {2, 1.5, 16.5}, {6.5, 7, 48}), "box [2,6.5]x[1.5,7]x[16.5,48]"},
                            C{box_mesh({0, 0, -5}, {8, 8, 70}), box_solid(tall, {0, 0, -5}, {8, 8, 70}), "a box around the whole grid"},
@@ -116,7 +116,8 @@ TEST_SUITE("Task 4: solid voxelization") {
                            C{box_mesh({1, 0.5, 0}, {62, 2, 3}), box_solid(odd2, {1, 0.5, 0}, {62, 2, 3}), "box [1,62]x[0.5,2]x[0,3] in 63 x 3 x 4"},
                            C{box_mesh({1.2, 0.2, 0.2}, {63.2, 32.8, 1.8}), box_solid(odd3, {1.2, 0.2, 0.2}, {63.2, 32.8, 1.8}), "box [1.2,63.2]x[0.2,32.8]x[0.2,1.8] in 65 x 33 x 2"},
                            C{box_mesh({1.2, 0.2, 0.2}, {64.2, 32.8, 1.8}), box_solid(odd3, {1.2, 0.2, 0.2}, {64.2, 32.8, 1.8}), "box [1.2,64.2]x[0.2,32.8]x[0.2,1.8] in 65 x 33 x 2"},
-                           C{box_mesh({1.2, 0.2, 0.2}, {62.2, 32.8, 1.8}), box_solid(odd4, {1.2, 0.2, 0.2}, {62.2, 32.8, 1.8}), "box [1.2,62.2]x[0.2,32.8]x[0.2,1.8] in 63 x 33 x 2"}})
+                           C{box_mesh({1.2, 0.2, 0.2}, {62.2, 32.8, 1.8}), box_solid(odd4, {1.2, 0.2, 0.2}, {62.2, 32.8, 1.8}), "box [1.2,62.2]x[0.2,32.8]x[0.2,1.8] in 63 x 33 x 2"},
+                           C{box_mesh({2, 2, 3}, {14, 9, 60}), box_solid(four, {2, 2, 3}, {14, 9, 60}), "box [2,14]x[2,9]x[3,60] in 16 x 16 x 64 (4 words a layer)"}})
             for (int t : {1, 2, 4}) {
                 for (int axis = 0; axis < 3; ++axis)
                     check_grid(parity_fill(c.s, c.want.dims, axis, t), c.want, c.what + ", axis " + std::to_string(axis) + ", " + std::to_string(t) + " thread(s)");
