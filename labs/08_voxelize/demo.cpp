@@ -6,6 +6,9 @@
 // The same file runs against the student's code and the reference: it calls only the lab's public API and lib.
 // A function that throws geolab::NotImplemented is named in the status line; what does not need it still shows.
 #include <algorithm>
+#include <array>
+#include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,6 +16,7 @@
 #include "geolab/models.hpp"
 #include "geolab/render/demo.hpp"
 #include "geolab/render/render.hpp"
+#include "geolab/render/slicer.hpp"
 #include "geolab/voxels.hpp"
 
 namespace {
@@ -26,6 +30,8 @@ const vec3 kVoxel{0.80f, 0.80f, 0.83f};    // voxel faces: grey
 const vec3 kCut{0.95f, 0.55f, 0.10f};      // faces on the section plane: orange
 const vec3 kMeshWire{0.15f, 0.35f, 0.85f};  // the input mesh's edges: blue
 const vec3 kPlane{0.85f, 0.35f, 0.05f};     // the section plane's outline: dark orange
+const vec3 kDiffer{0.85f, 0.10f, 0.10f};    // voxels where the GPU and the CPU differ: red
+const vec3 kSlab{0.10f, 0.45f, 0.20f};      // a depth slab's planes: green
 
 const char* kKeys =
     "Window keys:\n"
@@ -38,7 +44,9 @@ const char* kKeys =
 
 // The visible faces of the set voxels with k < k_cut (the section: voxels above it are not drawn), as quads in world
 // coordinates; faces lying on the section plane are listed in `cut`.
-PolygonSoup voxel_faces(const BitGrid& g, const Grid& grid, std::int64_t k_cut, std::vector<vec3>& colors) {
+// Voxels also set in `highlight` are drawn red (Task 7's figure: where the GPU and the CPU differ).
+PolygonSoup voxel_faces(const BitGrid& g, const Grid& grid, std::int64_t k_cut, std::vector<vec3>& colors,
+                        const BitGrid* highlight = nullptr) {
     PolygonSoup s;
     const Dims d = g.dims;
     auto on = [&](std::int64_t i, std::int64_t j, std::int64_t k) {
@@ -69,7 +77,7 @@ PolygonSoup voxel_faces(const BitGrid& g, const Grid& grid, std::int64_t k_cut, 
                     for (const auto& p : corner) s.positions.push_back(p);
                     s.add_face({n, n + 1, n + 2, n + 3});
                     const bool cut = a == 2 && positive && k + 1 == k_cut && k + 1 < d.nz && g.get(i, j, k + 1);
-                    colors.push_back(cut ? kCut : kVoxel);
+                    colors.push_back(highlight && highlight->get(i, j, k) ? kDiffer : cut ? kCut : kVoxel);
                 }
             }
     return s;
@@ -170,6 +178,143 @@ PolygonSoup load(const std::string& name) {
 
 gr::Image render(const gr::Frame& f, int w, int h) { return gr::render_image(f.scene, f.camera, w, h); }
 
+// ---- Task 7's figures: the slicing pipeline of seed 002 through OpenGL, and where it can differ from the CPU ----
+
+// An n_u × n_v pixel image (row 0 at the bottom, 0 or 1) drawn as cells on a w × h white panel: set pixels in
+// `on`, the others off-white, thin grey lines between cells.
+gr::Image pixel_panel(const std::vector<std::uint8_t>& img, int n_u, int n_v, vec3 on, int w, int h) {
+    gr::Image out{w, h, std::vector<std::uint8_t>(4 * std::size_t(w) * std::size_t(h), 255)};
+    const int cell = std::max(1, std::min((w - 16) / n_u, (h - 16) / n_v));
+    const int x0 = (w - cell * n_u) / 2, y0 = (h - cell * n_v) / 2;
+    for (int j = 0; j < n_v; ++j)
+        for (int i = 0; i < n_u; ++i) {
+            const bool set = img[std::size_t(j * n_u + i)] != 0;
+            for (int dy = 0; dy < cell; ++dy)
+                for (int dx = 0; dx < cell; ++dx) {
+                    const bool line = cell >= 4 && (dx == 0 || dy == 0);
+                    const int x = x0 + i * cell + dx, y = y0 + (n_v - 1 - j) * cell + dy;  // row 0 at the bottom
+                    std::uint8_t* p = out.rgba.data() + 4 * (std::size_t(y) * std::size_t(w) + std::size_t(x));
+                    const vec3 c = line ? vec3(0.86f) : set ? on : vec3(0.97f);
+                    for (int ch = 0; ch < 3; ++ch) p[ch] = std::uint8_t(255.0f * c[ch] + 0.5f);
+                }
+        }
+    return out;
+}
+
+// The figures of handout §9 (each needs your Task 7 functions; skipped with the reason otherwise).
+void render_gl_figures(gr::FigureWriter& w, const PolygonSoup& bunny, int pw, int ph) {
+    // The pipeline: the slicing camera looks down z through a 64 × 64 image; slab k's crossings XORed alone give
+    // the slice's outline; XORed onto all the slabs below, the filled section; every layer read back, the solid.
+    {
+        const Grid grid = fit_grid(bunny, 64, 1);
+        const PolygonSoup u = to_grid_units(bunny, grid);
+        const std::int64_t k = 26, n = grid.dims.nx;
+        std::vector<gr::Image> panels;
+        gr::Issues issues;
+        gr::attempt(issues, "slicing_camera", [&] {
+            std::vector<glm::dvec3> corners;
+            for (std::size_t f = 0; f < u.n_faces(); ++f) {
+                const auto vs = u.face(f);
+                for (std::size_t t = 1; t + 1 < vs.size(); ++t)
+                    corners.insert(corners.end(), {u.positions[vs[0]], u.positions[vs[t]], u.positions[vs[t + 1]]});
+            }
+            gr::SliceRasterizer raster{int(n), int(n)};
+            raster.set_triangles(corners, slicing_camera(grid.dims, 2));
+            raster.draw_xor(0, raster.triangle_count(), float(k) - 0.5f, float(k) + 0.5f);
+            const auto outline = raster.read();
+            raster.clear();
+            raster.draw_xor(0, raster.triangle_count(), -std::numeric_limits<float>::infinity(), float(k) + 0.5f);
+            const auto section = raster.read();
+            // panel 1: the mesh, the grid's box and slab k's two planes
+            gr::Frame fr;
+            fr.scene.add_mesh(bunny, {.color = {0.9f, 0.9f, 0.95f}, .smooth = true, .opacity = 0.45f});
+            const glm::dvec3 lo = grid.origin, hi = grid.origin + grid.voxel_size * double(n);
+            for (double z : {double(k) - 0.5, double(k) + 0.5}) {
+                const double wz = grid.origin.z + grid.voxel_size * z;
+                fr.scene.add_polyline({vec3(lo.x, lo.y, wz), vec3(hi.x, lo.y, wz), vec3(hi.x, hi.y, wz), vec3(lo.x, hi.y, wz)}, kSlab, 2.5f, true);
+            }
+            fr.camera = gr::whole(fr.scene, double(pw) / ph, 20.0f, 55.0f);  // the view of bunny_sections.png
+            panels.push_back(render(fr, pw, ph));
+            panels.push_back(pixel_panel(outline, int(n), int(n), {0.15f, 0.35f, 0.85f}, pw, ph));
+            panels.push_back(pixel_panel(section, int(n), int(n), kCut, pw, ph));
+        });
+        gr::attempt(issues, "voxelize_gl", [&] {
+            if (panels.size() != 3) return;
+            gr::Frame fr;
+            std::vector<vec3> colors;
+            fr.scene.add_mesh_face_colors(voxel_faces(voxelize_gl(u, grid.dims, 2), grid, k + 1, colors), colors, {.smooth = false});
+            fr.camera = gr::whole(fr.scene, double(pw) / ph, 20.0f, 55.0f);
+            panels.push_back(render(fr, pw, ph));
+        });
+        if (panels.size() == 4)
+            w.write("gl_pipeline.png", gr::hstack(panels, 4),
+                    "bunny00 at 64³ sliced along z: slab 26 in the view volume, its crossings XORed alone (the outline), "
+                    "XORed onto the slabs below (the section), the solid read back layer by layer (cut above layer 26)");
+        else
+            w.skip("gl_pipeline.png", issues.str());
+    }
+    // Where GPU and CPU agree and differ: an octahedron with every vertex on a voxel centre, sliced along x (ties
+    // decided like parity_fill: identical); a box whose wall x = 2.5 + 1/1024 the rasterizer snaps to 2.5 (red: the
+    // layer the GPU adds, every centre 1/1024 voxel from the wall).
+    {
+        std::vector<gr::Image> panels;
+        gr::Issues issues;
+        gr::attempt(issues, "voxelize_gl", [&] {
+            PolygonSoup oct;
+            const glm::dvec3 c(4.5, 4.5, 4.5);
+            for (int a = 0; a < 3; ++a)
+                for (double sgn : {1.0, -1.0}) {
+                    glm::dvec3 p = c;
+                    p[a] += 3 * sgn;
+                    oct.positions.push_back(p);
+                }
+            for (std::uint32_t xi : {0u, 1u})
+                for (std::uint32_t yi : {2u, 3u})
+                    for (std::uint32_t zi : {4u, 5u}) {
+                        if ((xi == 0) == (yi == 2) == (zi == 4)) oct.add_face({xi, yi, zi});
+                        else oct.add_face({xi, zi, yi});
+                    }
+            Grid g9;
+            g9.dims = {9, 9, 9};
+            const BitGrid gl = voxelize_gl(oct, g9.dims, 0), cpu = parity_fill(oct, g9.dims, 2, 1);
+            gr::Frame fr;
+            std::vector<vec3> colors;
+            const BitGrid differ = bits_difference(bits_union(gl, cpu), bits_intersection(gl, cpu));
+            fr.scene.add_mesh_face_colors(voxel_faces(gl, g9, 5, colors, &differ), colors, {.smooth = false, .wireframe = true, .wire_color = {0.3f, 0.3f, 0.3f}});
+            fr.scene.add_mesh(oct, {.color = {0.9f, 0.9f, 0.95f}, .smooth = false, .wireframe = true, .wire_color = kMeshWire, .opacity = 0.2f});
+            fr.camera = gr::whole(fr.scene, double(pw) / ph, 30.0f, 35.0f);
+            panels.push_back(render(fr, pw, ph));
+        });
+        gr::attempt(issues, "voxelize_gl", [&] {
+            Grid g8;
+            g8.dims = {8, 8, 8};
+            const glm::dvec3 lo(2.5 + 1.0 / 1024, 1.5, 2.5), hi(6.5, 6.5, 5.5);
+            PolygonSoup box;
+            for (int q = 0; q < 8; ++q) box.positions.push_back({q & 1 ? hi.x : lo.x, q & 2 ? hi.y : lo.y, q & 4 ? hi.z : lo.z});
+            for (const auto& f : {std::array<std::uint32_t, 4>{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}})
+                box.add_face({f[0], f[1], f[2], f[3]});
+            const BitGrid gl = voxelize_gl(box, g8.dims, 2), cpu = parity_fill(box, g8.dims, 2, 1);
+            const BitGrid differ = bits_difference(gl, cpu);
+            std::optional<gr::Camera> camera;  // one view for both panels: the GPU's, which holds the CPU's
+            for (const BitGrid* g : {&gl, &cpu}) {
+                gr::Frame fr;
+                std::vector<vec3> colors;
+                fr.scene.add_mesh_face_colors(voxel_faces(*g, g8, 4, colors, &differ), colors, {.smooth = false, .wireframe = true, .wire_color = {0.3f, 0.3f, 0.3f}});
+                fr.scene.add_mesh(box, {.color = {0.9f, 0.9f, 0.95f}, .smooth = false, .wireframe = true, .wire_color = kMeshWire, .opacity = 0.15f});
+                if (!camera) camera = gr::whole(fr.scene, double(pw) / ph, -35.0f, 30.0f);
+                panels.push_back(render({fr.scene, *camera, ""}, pw, ph));
+            }
+            std::swap(panels[panels.size() - 1], panels[panels.size() - 2]);  // CPU, then GPU
+        });
+        if (panels.size() == 3)
+            w.write("gl_vs_cpu.png", gr::hstack(panels, 4),
+                    "left: octahedron with vertices at voxel centres, GPU along x = CPU (ties alike); middle, right: a box "
+                    "whose wall lies 1/1024 voxel right of the centres x = 2.5, CPU and GPU (red: the snapped layer)");
+        else
+            w.skip("gl_vs_cpu.png", issues.str());
+    }
+}
+
 int render_figures(gr::FigureWriter w) {
     const auto bunny = gr::first_model({"bunny00"});
     if (!bunny) {
@@ -194,6 +339,7 @@ int render_figures(gr::FigureWriter w) {
         secs.push_back(render(draw(d, 20.0f, 55.0f), pw, ph));
     }
     w.write("bunny_sections.png", gr::hstack(secs, 4), "bunny00 solid at 64³, sections at 30 %, 50 %, 70 % of the height");
+    render_gl_figures(w, d.mesh, pw, ph);
     // per-axis parity: the three parity fills of the bunny, cut at the middle
     {
         const Grid grid = fit_grid(d.mesh, 48, 1);

@@ -91,6 +91,12 @@ BitGrid grid_of(Dims d, F inside) {
     return g;
 }
 
+// The layers [k0, k1) of g as a grid of their own (layer k0 first), voxel by voxel.
+inline BitGrid layers_of(const BitGrid& g, std::int64_t k0, std::int64_t k1) {
+    return grid_of(Dims{g.dims.nx, g.dims.ny, k1 - k0},
+                   [&](std::int64_t i, std::int64_t j, std::int64_t k) { return g.get(i, j, k + k0); });
+}
+
 // ---- meshes by construction ---------------------------------------------------------------------------------
 // The box [lo, hi], 12 triangles, normals outward (inward when `inward`).
 inline PolygonSoup box_mesh(glm::dvec3 lo, glm::dvec3 hi, bool inward = false) {
@@ -161,17 +167,21 @@ inline PolygonSoup icosphere(glm::dvec3 c, double r, int levels) {
 // "Dust": one tiny triangle inside each voxel (i, j, k0) of an nx × ny layer, in row order, so that threads taking
 // triangles in turn write neighbouring bits of the same 64-bit words at the same time (a race shows). Each triangle
 // covers its column's centre (i + ½, j + ½), so along z it flips that column once (z within 0.05 of the given height).
-inline PolygonSoup dust(std::int64_t nx, std::int64_t ny, double z) {
+// With `shuffle`, the triangles come in a random order (a fixed seed): whatever block of them a thread takes, the
+// bits it sets lie in every word of the layer, written at any time of the run by any thread.
+inline PolygonSoup dust(std::int64_t nx, std::int64_t ny, double z, bool shuffle = false) {
+    std::vector<std::int64_t> order(std::size_t(nx * ny));
+    for (std::size_t n = 0; n < order.size(); ++n) order[n] = std::int64_t(n);
+    if (shuffle) std::shuffle(order.begin(), order.end(), std::mt19937_64(2024));
     PolygonSoup s;
-    for (std::int64_t j = 0; j < ny; ++j)
-        for (std::int64_t i = 0; i < nx; ++i) {
-            const auto b = std::uint32_t(s.positions.size());
-            const double x = double(i), y = double(j);
-            s.positions.push_back({x + 0.3, y + 0.3, z});
-            s.positions.push_back({x + 0.8, y + 0.4, z + 0.05});
-            s.positions.push_back({x + 0.4, y + 0.8, z - 0.05});
-            s.add_face({b, b + 1, b + 2});
-        }
+    for (const std::int64_t n : order) {
+        const auto b = std::uint32_t(s.positions.size());
+        const double x = double(n % nx), y = double(n / nx);
+        s.positions.push_back({x + 0.3, y + 0.3, z});
+        s.positions.push_back({x + 0.8, y + 0.4, z + 0.05});
+        s.positions.push_back({x + 0.4, y + 0.8, z - 0.05});
+        s.add_face({b, b + 1, b + 2});
+    }
     return s;
 }
 
@@ -287,6 +297,34 @@ inline bool expected_overlap(const std::array<glm::dvec3, 3>& t, std::int64_t i,
         }
     const glm::dvec3 lo{double(i), double(j), double(k)};
     return clip_meets_open_box(u, lo, lo + 1.0);
+}
+
+// Triangles near the voxel [0, 1]³ that neither the box's face normals nor the triangle's normal separate from it,
+// but clipping says miss it: only one of the nine edge cross-product axes separates them (found by search).
+inline std::vector<std::array<glm::dvec3, 3>> edge_axis_triangles(std::size_t count, std::uint64_t seed) {
+    Rng rng(seed);
+    std::vector<std::array<glm::dvec3, 3>> found;
+    for (int n = 0; n < 400000 && found.size() < count; ++n) {
+        std::array<glm::dvec3, 3> t;
+        const glm::dvec3 c(rng.uniform(-0.3, 1.3), rng.uniform(-0.3, 1.3), rng.uniform(-0.3, 1.3));
+        for (auto& p : t) p = c + glm::dvec3(rng.uniform(-1.2, 1.2), rng.uniform(-1.2, 1.2), rng.uniform(-1.2, 1.2));
+        bool separated = false;
+        for (int d = 0; d < 3; ++d) {
+            const double lo = std::min({t[0][d], t[1][d], t[2][d]}), hi = std::max({t[0][d], t[1][d], t[2][d]});
+            separated |= lo >= 1 || hi <= 0;
+        }
+        const glm::dvec3 nrm = glm::cross(t[1] - t[0], t[2] - t[0]);
+        double lo = 1e300, hi = -1e300;
+        for (int c8 = 0; c8 < 8; ++c8) {
+            const double p = glm::dot(nrm, glm::dvec3(c8 & 1, (c8 >> 1) & 1, (c8 >> 2) & 1));
+            lo = std::min(lo, p);
+            hi = std::max(hi, p);
+        }
+        const double p = glm::dot(nrm, t[0]);
+        separated |= p <= lo || p >= hi;
+        if (!separated && !expected_overlap(t, 0, 0, 0)) found.push_back(t);
+    }
+    return found;
 }
 
 // The surface voxels by the rule above, every voxel of every triangle's bounding box (slow; small grids).

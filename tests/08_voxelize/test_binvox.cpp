@@ -27,7 +27,7 @@ const std::string header2 = "#binvox 1\ndim 2 2 2\ntranslate 0.5 -1 2\nscale 0.2
 }  // namespace
 
 TEST_SUITE("Task 6: binvox") {
-    TEST_CASE("binvox: hand-checked bytes of 2³ files (x; z; y order with y fastest)" * geolab::points(4) *
+    TEST_CASE("binvox: hand-checked bytes of 2³ files (x; z; y order with y fastest)" * geolab::points(2) *
               geolab::hint("file position x·n² + z·n + y holds voxel (x, y, z); runs are (value, count) byte pairs")) {
         struct C {
             std::int64_t i, j, k;
@@ -70,7 +70,7 @@ TEST_SUITE("Task 6: binvox") {
             CHECK(back.scale == b.scale);
         }
     }
-    TEST_CASE("binvox: hostile files are clear errors; never crashes or huge allocations" * geolab::points(3) *
+    TEST_CASE("binvox: hostile files are clear errors; never crashes or huge allocations" * geolab::points(2) *
               geolab::hint("check every header line and every pair; compare n³ with what the pairs can hold before "
                            "allocating; throw geolab::IoError")) {
         const std::string ok = header2 + pairs({0, 4, 1, 1, 0, 3});
@@ -102,6 +102,12 @@ TEST_SUITE("Task 6: binvox") {
             {"#binvox 1\ndim 9223372036854775807 9223372036854775807 9223372036854775807\ndata\n", "int64 max"},
             {"#binvox 1\ndim 99999999999999999999999 1 1\ndata\n", "a size past int64"},
             {"#binvox 1\n" + std::string(100000, 'x'), "a huge line"},
+            {"#binvox 1\ndim 2 3 2\ndata\n" + pairs({0, 8}), "dims 2 3 2"},
+            {"#binvox 1\ndim 2 2 2\ndata 1\n" + pairs({0, 8}), "a data line with a word after data"},
+            {"#binvox 1\ndim 2 2 2\nscale 1x\ndata\n" + pairs({0, 8}), "scale 1x"},
+            {"#binvox 1\ndim 2 2 2\ntranslate 1 2 3x\ndata\n" + pairs({0, 8}), "translate 1 2 3x"},
+            {"#binvox 1\ndim 2 2 2\nscale 0.5" + std::string(257 - 9, ' ') + "\ndata\n" + pairs({0, 8}), "a 257-byte scale line"},
+            {"#binvox 1\ndim 2 2 2\nscale 0.5" + std::string(300, ' ') + "\ndata\n" + pairs({0, 8}), "a 309-byte scale line"},
         };
         for (const auto& [bytes, what] : bad) {
             INFO(what << ": expected geolab::IoError");
@@ -118,12 +124,39 @@ TEST_SUITE("Task 6: binvox") {
             CHECK(e.line() == 3);
             CHECK(e.file() == "f.binvox");
         }
+        // what the header allows: "\r\n" line ends, spaces and tabs around words, lines of 256 bytes
+        for (const auto& [bytes, what] : std::vector<std::pair<std::string, std::string>>{
+                 {"#binvox 1\r\ndim 2 2 2\r\ntranslate 0.5 -1 2\r\nscale 0.25\r\ndata\r\n", "\\r\\n line ends"},
+                 {"#binvox 1\n \tdim\t2  2 2 \ntranslate 0.5\t-1 2\t\n scale 0.25 \n\tdata  \n", "spaces and tabs around words"},
+                 {"#binvox 1\ndim 2 2 2\ntranslate 0.5 -1 2\nscale 0.25" + std::string(256 - 10, ' ') + "\ndata\n", "a 256-byte scale line"}}) {
+            INFO(what << ": " << hex(bytes));
+            try {
+                const Binvox b = decode_binvox(bytes + pairs({0, 4, 1, 1, 0, 3}), what);
+                CHECK_MESSAGE(b.grid.dims.nx == 2, "expected dim 2, got " << b.grid.dims.nx);
+                CHECK_MESSAGE((b.translate == glm::dvec3(0.5, -1, 2) && b.scale == 0.25),
+                              "expected translate (0.5, -1, 2) scale 0.25, got " << str(b.translate) << " " << b.scale);
+                CHECK_MESSAGE((count_bits(b.grid) == 1 && b.grid.get(1, 0, 0)), "expected only voxel (1, 0, 0), got " << count_bits(b.grid) << " voxels");
+            } catch (const std::exception& e) {
+                FAIL_CHECK("expected a valid file, got an exception: " << e.what());
+            }
+        }
+        // n³ = 255 · pairs exactly: the pairs hold every voxel (255³ set voxels in 255² pairs)
+        {
+            std::string full = "#binvox 1\ndim 255 255 255\ndata\n";
+            for (int r = 0; r < 255 * 255; ++r) full += pairs({1, 255});
+            try {
+                const Binvox b = decode_binvox(full, "255³ full");
+                CHECK_MESSAGE(count_bits(b.grid) == 255ull * 255 * 255, "255³ full grid in 65,025 pairs of (1, 255): expected 16,581,375 voxels, got " << count_bits(b.grid));
+            } catch (const std::exception& e) {
+                FAIL_CHECK("255³ full grid in 65,025 pairs of (1, 255): expected a valid file, got an exception: " << e.what());
+            }
+        }
         // version 2: any non-zero value is a set voxel
         const Binvox v2 = decode_binvox("#binvox 2\ndim 2 2 2\ndata\n" + pairs({0, 4, 7, 1, 0, 3}));
         CHECK(v2.grid.get(1, 0, 0));
         CHECK(count_bits(v2.grid) == 1);
     }
-    TEST_CASE("binvox: what cannot be written is an error" * geolab::points(2) *
+    TEST_CASE("binvox: what cannot be written is an error" * geolab::points(1) *
               geolab::hint("non-cubic or empty grids, wrong words sizes and non-finite numbers: std::invalid_argument")) {
         Binvox b;
         b.grid = BitGrid({2, 2, 3});

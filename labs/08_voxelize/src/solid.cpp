@@ -3,6 +3,7 @@
 #include <array>
 #include <atomic>
 #include <bit>
+#include <cstdint>
 #include <cmath>
 #include <stdexcept>
 #include <thread>
@@ -17,6 +18,11 @@
 namespace geolab::voxels {
 
 // Helper functions of your own can go here.
+
+BitGrid parity_fill_layers(const PolygonSoup& mesh, const Dims& dims, int axis, std::int64_t k0, std::int64_t k1,
+                           int threads) {
+    throw geolab::NotImplemented(__func__);
+}
 
 BitGrid parity_fill(const PolygonSoup& mesh, const Dims& dims, int axis, int threads) {
     throw geolab::NotImplemented(__func__);

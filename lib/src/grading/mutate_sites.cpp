@@ -974,7 +974,9 @@ inline void reached(long k) {
     static std::atomic<unsigned char> seen[1 << 16];
     if (k < 0 || k >= (1 << 16)) return;
     const unsigned char phase = past_startup(k) ? 2 : 1;
-    if (seen[k].fetch_or(phase) & phase) return;
+    // a plain load first: sites in loops that several threads run are reached millions of times, and an atomic
+    // read-modify-write each time would bounce the flag's cache line between the cores
+    if ((seen[k].load(std::memory_order_relaxed) & phase) || (seen[k].fetch_or(phase) & phase)) return;
     char buf[32];
     const int n = std::snprintf(buf, sizeof buf, "%ld\n", phase == 2 ? k : -1 - k);
     (void)!::write(coverage_fd(), buf, static_cast<std::size_t>(n));

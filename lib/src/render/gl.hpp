@@ -42,6 +42,7 @@ namespace geolab::render::detail {
     X(PFNGLGETUNIFORMLOCATIONPROC, GetUniformLocation)           \
     X(PFNGLUNIFORM1FPROC, Uniform1f)                             \
     X(PFNGLUNIFORM2FPROC, Uniform2f)                             \
+    X(PFNGLUNIFORM1IPROC, Uniform1i)                             \
     X(PFNGLUNIFORMMATRIX4FVPROC, UniformMatrix4fv)               \
     X(PFNGLGENVERTEXARRAYSPROC, GenVertexArrays)                 \
     X(PFNGLBINDVERTEXARRAYPROC, BindVertexArray)                 \
@@ -52,7 +53,9 @@ namespace geolab::render::detail {
     X(PFNGLDELETEBUFFERSPROC, DeleteBuffers)                     \
     X(PFNGLENABLEVERTEXATTRIBARRAYPROC, EnableVertexAttribArray) \
     X(PFNGLVERTEXATTRIBPOINTERPROC, VertexAttribPointer)         \
-    X(PFNGLDRAWARRAYSPROC, DrawArrays)
+    X(PFNGLDRAWARRAYSPROC, DrawArrays)                           \
+    X(PFNGLLOGICOPPROC, LogicOp)                                 \
+    X(PFNGLGETINTEGERVPROC, GetIntegerv)
 
 // The function table of one context. Valid only while that context is current.
 struct Gl {
@@ -63,5 +66,9 @@ struct Gl {
     // Fills every entry through get_proc; throws std::runtime_error naming the first function not found.
     void load(GetProc get_proc);
 };
+
+// A program of a vertex, an optional geometry (gs may be null) and a fragment shader, in the current context.
+// Throws std::runtime_error with the GLSL log when one does not compile or the program does not link.
+GLuint link_program(const Gl& gl, const char* vs, const char* gs, const char* fs);
 
 }  // namespace geolab::render::detail

@@ -136,41 +136,6 @@ in vec4 f_color;
 out vec4 frag;
 void main() { frag = f_color; })";
 
-GLuint compile(const Gl& gl, GLenum type, const char* source) {
-    GLuint s = gl.CreateShader(type);
-    gl.ShaderSource(s, 1, &source, nullptr);
-    gl.CompileShader(s);
-    GLint ok = 0;
-    gl.GetShaderiv(s, GL_COMPILE_STATUS, &ok);
-    if (!ok) {
-        char log[2048] = {};
-        gl.GetShaderInfoLog(s, sizeof log, nullptr, log);
-        gl.DeleteShader(s);
-        throw std::runtime_error(std::string("geolab::render: shader does not compile: ") + log);
-    }
-    return s;
-}
-
-GLuint link(const Gl& gl, const char* vs, const char* gs, const char* fs) {
-    GLuint p = gl.CreateProgram();
-    GLuint shaders[3] = {compile(gl, GL_VERTEX_SHADER, vs), gs ? compile(gl, GL_GEOMETRY_SHADER, gs) : 0,
-                         compile(gl, GL_FRAGMENT_SHADER, fs)};
-    for (GLuint s : shaders)
-        if (s) gl.AttachShader(p, s);
-    gl.LinkProgram(p);
-    for (GLuint s : shaders)
-        if (s) gl.DeleteShader(s);  // flagged; freed with the program
-    GLint ok = 0;
-    gl.GetProgramiv(p, GL_LINK_STATUS, &ok);
-    if (!ok) {
-        char log[2048] = {};
-        gl.GetProgramInfoLog(p, sizeof log, nullptr, log);
-        gl.DeleteProgram(p);
-        throw std::runtime_error(std::string("geolab::render: shader program does not link: ") + log);
-    }
-    return p;
-}
-
 void push(std::vector<float>& out, glm::vec3 v) { out.insert(out.end(), {v.x, v.y, v.z}); }
 
 constexpr float kPull = 1.5e-3f;  // lines and points move this fraction of their depth towards the eye
@@ -178,10 +143,10 @@ constexpr float kPull = 1.5e-3f;  // lines and points move this fraction of thei
 }  // namespace
 
 Renderer::Renderer(const Gl& gl) : gl_(gl) {
-    prog_.mesh = link(gl, kMeshVs, nullptr, kMeshFs);
-    prog_.lines = link(gl, kLineVs, kLineGs, kLineFs);
-    prog_.points = link(gl, kPointVs, nullptr, kPointFs);
-    prog_.overlay = link(gl, kOverlayVs, nullptr, kOverlayFs);
+    prog_.mesh = link_program(gl, kMeshVs, nullptr, kMeshFs);
+    prog_.lines = link_program(gl, kLineVs, kLineGs, kLineFs);
+    prog_.points = link_program(gl, kPointVs, nullptr, kPointFs);
+    prog_.overlay = link_program(gl, kOverlayVs, nullptr, kOverlayFs);
 }
 
 Renderer::~Renderer() {

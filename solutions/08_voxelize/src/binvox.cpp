@@ -100,8 +100,9 @@ Binvox decode_binvox(const std::string& bytes, const std::string& name) {
     std::int64_t n = 0;
     auto read_double = [&](std::string_view w) {
         double x = 0;
-        const auto [p, ec] = std::from_chars(w.data(), w.data() + w.size(), x);
-        if (ec != std::errc() || p != w.data() + w.size() || !std::isfinite(x))
+        const char* const end = w.data() + w.size();
+        const auto [p, ec] = std::from_chars(w.data(), end, x);
+        if (ec != std::errc() || p != end || !std::isfinite(x))
             throw IoError(name, line_no, "\"" + std::string(w) + "\" is not a finite number");
         return x;
     };
@@ -115,9 +116,11 @@ Binvox decode_binvox(const std::string& bytes, const std::string& name) {
             if (w.size() != 4) throw IoError(name, line_no, "\"dim\" needs three sizes");
             std::int64_t s[3];
             for (int t = 0; t < 3; ++t) {
-                const auto [p, ec] = std::from_chars(w[t + 1].data(), w[t + 1].data() + w[t + 1].size(), s[t]);
-                if (ec != std::errc() || p != w[t + 1].data() + w[t + 1].size() || s[t] < 1)
-                    throw IoError(name, line_no, "\"" + std::string(w[t + 1]) + "\" is not a size >= 1");
+                const std::string_view word = w[t + 1];
+                const char* const end = word.data() + word.size();
+                const auto [p, ec] = std::from_chars(word.data(), end, s[t]);
+                if (ec != std::errc() || p != end || s[t] < 1)
+                    throw IoError(name, line_no, "\"" + std::string(word) + "\" is not a size >= 1");
             }
             if (s[0] != s[1] || s[1] != s[2])
                 throw IoError(name, line_no, "dims " + std::to_string(s[0]) + " " + std::to_string(s[1]) + " " +

@@ -2,6 +2,7 @@
 // most contracts name). Honest: 0 (no task is done); a test that passes here checks only that bad input is
 // rejected, never that good input is accepted. Generated from the stub by replacing its throw.
 // Task 2: the triangle–box test (handout §3).
+#include <stdexcept>
 #include <algorithm>
 #include <cmath>
 

@@ -4,6 +4,10 @@
 
 namespace geolab::voxels {
 
+BitGrid parity_fill_layers(const PolygonSoup&, const Dims& dims, int, std::int64_t k0, std::int64_t k1, int) {
+    return BitGrid(Dims{dims.nx, dims.ny, k1 - k0});
+}
+
 BitGrid parity_fill(const PolygonSoup&, const Dims& dims, int, int) { return BitGrid(dims); }
 
 std::uint64_t count_boundary_edges(const PolygonSoup&) { return 0; }

@@ -5,6 +5,10 @@
 
 namespace geolab::voxels {
 
+BitGrid voxelize_surface_layers(const PolygonSoup&, const Dims& dims, std::int64_t k0, std::int64_t k1, int) {
+    return BitGrid(Dims{dims.nx, dims.ny, k1 - k0});
+}
+
 BitGrid voxelize_surface(const PolygonSoup&, const Dims& dims, int) { return BitGrid(dims); }
 
 }  // namespace geolab::voxels

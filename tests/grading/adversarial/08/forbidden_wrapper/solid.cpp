@@ -13,6 +13,11 @@ namespace {
 std::uint64_t (*const table[])(const PolygonSoup&) = {&helpers::edges_of};
 }
 
+BitGrid parity_fill_layers(const PolygonSoup& mesh, const Dims& dims, int axis, std::int64_t k0, std::int64_t k1,
+                           int threads) {
+    throw geolab::NotImplemented(__func__);
+}
+
 BitGrid parity_fill(const PolygonSoup& mesh, const Dims& dims, int axis, int threads) {
     throw geolab::NotImplemented(__func__);
 }

@@ -6,6 +6,13 @@
 
 namespace geolab::voxels {
 
+BitGrid parity_fill_layers(const PolygonSoup&, const Dims& dims, int, std::int64_t k0, std::int64_t k1, int) {
+    BitGrid g;  // negative sizes and three words
+    g.dims = {-dims.nx, dims.ny, k0 - k1};
+    g.words.assign(3, ~0ull);
+    return g;
+}
+
 BitGrid parity_fill(const PolygonSoup&, const Dims& dims, int, int) {
     BitGrid g;
     g.dims = {-dims.nx, dims.ny, -dims.nz};

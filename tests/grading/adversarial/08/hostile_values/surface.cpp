@@ -9,6 +9,13 @@
 
 namespace geolab::voxels {
 
+BitGrid voxelize_surface_layers(const PolygonSoup&, const Dims&, std::int64_t, std::int64_t, int) {
+    BitGrid g;  // a size that promises 2^60 voxels, one word
+    g.dims = {std::int64_t(1) << 20, std::int64_t(1) << 20, std::int64_t(1) << 20};
+    g.words = {~0ull};
+    return g;
+}
+
 BitGrid voxelize_surface(const PolygonSoup&, const Dims& dims, int) {
     BitGrid g;
     g.dims = {std::int64_t(1) << 20, std::int64_t(1) << 20, std::int64_t(1) << 20};

@@ -6,6 +6,7 @@
 #include <array>
 #include <atomic>
 #include <bit>
+#include <cstdint>
 #include <cmath>
 #include <stdexcept>
 #include <thread>
@@ -20,6 +21,11 @@
 namespace geolab::voxels {
 
 // Helper functions of your own can go here.
+
+BitGrid parity_fill_layers(const PolygonSoup& mesh, const Dims& dims, int axis, std::int64_t k0, std::int64_t k1,
+                           int threads) {
+    return {};
+}
 
 BitGrid parity_fill(const PolygonSoup& mesh, const Dims& dims, int axis, int threads) {
     return {};

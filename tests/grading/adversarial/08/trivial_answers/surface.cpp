@@ -3,7 +3,6 @@
 // asserts nothing a non-answer cannot satisfy. Generated from the stub by replacing its throw with `return {};`.
 // Task 3: surface voxelization (handout §4).
 #include <algorithm>
-#include <array>
 #include <atomic>
 #include <cmath>
 #include <stdexcept>
@@ -17,6 +16,11 @@
 namespace geolab::voxels {
 
 // Helper functions of your own can go here.
+
+BitGrid voxelize_surface_layers(const PolygonSoup& mesh, const Dims& dims, std::int64_t k0, std::int64_t k1,
+                                int threads) {
+    return {};
+}
 
 BitGrid voxelize_surface(const PolygonSoup& mesh, const Dims& dims, int threads) {
     return {};
