@@ -34,6 +34,7 @@
 #include <string>
 #include <vector>
 
+#include "common/process_stats.hpp"
 #include "common/ratio_main.hpp"
 #include "geolab/io.hpp"
 #include "geolab/models.hpp"
@@ -50,24 +51,8 @@ namespace {
 namespace vx = geolab::voxels;
 
 // ---- memory and time figures --------------------------------------------------------------------------------
-long minor_faults() {
-    rusage u{};
-    getrusage(RUSAGE_SELF, &u);
-    return u.ru_minflt;
-}
-
-// A field of /proc/self/status in KiB ("VmRSS", "VmHWM"), or -1.
-long status_kib(const char* field) {
-    std::FILE* f = std::fopen("/proc/self/status", "r");
-    if (!f) return -1;
-    char line[256];
-    long kib = -1;
-    const std::size_t n = std::strlen(field);
-    while (std::fgets(line, sizeof line, f))
-        if (std::strncmp(line, field, n) == 0 && line[n] == ':') kib = std::atol(line + n + 1);
-    std::fclose(f);
-    return kib;
-}
+using geolab::bench::minor_faults;
+using geolab::bench::status_kib;
 
 double cpu_seconds() {
     timespec t{};
