@@ -824,8 +824,9 @@ std::optional<int> DemoProgram::parse(int argc, char** argv) {
 int DemoProgram::run(const std::function<int()>& body) {
     try {
         if (!figures_.empty()) check_figure_dir(figures_);
+        const std::size_t reports = memory_limit_reports();
         const int status = body();
-        if (status == 0 && memory_limit_reported()) {
+        if (status == 0 && memory_limit_reports() != reports) {
             std::cerr << program_ << ": a step ran out of memory (see above): exit status 1\n";
             return 1;
         }

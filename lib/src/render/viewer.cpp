@@ -419,13 +419,13 @@ bool limit_demo_memory(std::size_t mb) {
 }
 
 namespace {
-std::atomic<bool> g_memory_limit_reported{false};
+std::atomic<std::size_t> g_memory_limit_reports{0};
 }  // namespace
 
-bool memory_limit_reported() { return g_memory_limit_reported.load(); }
+std::size_t memory_limit_reports() { return g_memory_limit_reports.load(); }
 
 std::string memory_limit_message(const std::string& where) {
-    g_memory_limit_reported = true;
+    ++g_memory_limit_reports;
     rlimit r{};
     std::string cap;
     if (::getrlimit(RLIMIT_AS, &r) == 0 && r.rlim_cur != RLIM_INFINITY)

@@ -54,9 +54,9 @@ std::size_t default_demo_memory_mb();
 bool limit_demo_memory(std::size_t mb);
 //! "memory limit (N MiB) exceeded in WHERE: ...": the sentence for a std::bad_alloc under limit_demo_memory().
 std::string memory_limit_message(const std::string& where);
-//! True once memory_limit_message() was asked for: some step of this process ran out of memory (a demo that
-//! carries on past it, drawing the rest, still ends with status 1).
-bool memory_limit_reported();
+//! How many times memory_limit_message() was asked for in this process: a step ran out of memory each time (a demo
+//! that carries on past it, drawing the rest, still ends with status 1: DemoProgram::run compares the counts).
+std::size_t memory_limit_reports();
 
 //! The folder the S key writes screenshots into: out/screenshots under the working directory.
 std::filesystem::path screenshot_dir();
