@@ -824,9 +824,9 @@ std::optional<int> DemoProgram::parse(int argc, char** argv) {
 int DemoProgram::run(const std::function<int()>& body) {
     try {
         if (!figures_.empty()) check_figure_dir(figures_);
-        const std::size_t reports = memory_limit_reports();
+        memory_reports_at_start_ = memory_limit_reports();
         const int status = body();
-        if (status == 0 && memory_limit_reports() != reports) {
+        if (status == 0 && memory_limit_reports() != memory_reports_at_start_) {
             std::cerr << program_ << ": a step ran out of memory (see above): exit status 1\n";
             return 1;
         }
@@ -843,6 +843,13 @@ int DemoProgram::run(const std::function<int()>& body) {
 }
 
 int DemoProgram::write_png(const Scene& scene, const Camera& camera, const std::string& status) const {
+    if (memory_limit_reports() != memory_reports_at_start_) {
+        // the renderer (OSMesa) allocates hundreds of MiB of its own and does not survive a failed allocation: a
+        // process at its cap says so instead of drawing
+        std::cout << status << "\n";
+        std::cerr << program_ << ": not drawn: a step ran out of memory (see above)\n";
+        return 1;
+    }
     render_png(scene, camera, png_, width(), height());
     std::cout << status << "\nwrote " << png_ << "\n";
     return 0;

@@ -358,7 +358,8 @@ public:
     //! With --figures, check_figure_dir(figures()) runs first.
     int run(const std::function<int()>& body);
 
-    //! Renders `scene` into --png's file at --size and prints "STATUS\nwrote FILE". \return 0.
+    //! Renders `scene` into --png's file at --size and prints "STATUS\nwrote FILE". \return 0; or, when a step of
+    //! run()'s body ran out of memory, prints STATUS, draws nothing (the renderer needs memory of its own) and returns 1.
     int write_png(const Scene& scene, const Camera& camera, const std::string& status) const;
     int write_png(const Frame& frame) const { return write_png(frame.scene, frame.camera, frame.status); }
     //! A FigureWriter into --figures' folder at --size.
@@ -406,6 +407,7 @@ private:
              const std::function<void(const ScriptStep&)>& step) const;
     int write_headless(const Window& window) const;
     std::string program_, keys_help_;
+    std::size_t memory_reports_at_start_ = 0;  //!< memory_limit_reports() when run() started
     CLI::App app_;
     std::string png_, figures_, screenshot_, keys_;
     int width_, frames_ = 0;
