@@ -115,6 +115,25 @@ struct Stage {
     }
 };
 
+// Writes `voxels` to --out (.raw or .binvox, by its extension) and reports the file's size.
+void write_grid(const VoxelizeOpts& o, const voxels::BitGrid& voxels, const voxels::Grid& grid, Stage& st,
+                nlohmann::json& report) {
+    namespace vx = geolab::voxels;
+    if (is_raw(o.out)) {
+        vx::write_raw(o.out, voxels);
+    } else {
+        vx::Binvox b;
+        b.grid = voxels;
+        b.translate = grid.origin;
+        b.scale = grid.voxel_size * double(o.res);
+        vx::write_binvox(o.out, b);
+    }
+    report["out"] = o.out;
+    const auto bytes = std::filesystem::file_size(o.out);
+    report["out_bytes"] = bytes;
+    st.done("write", o.out + " (" + std::to_string(bytes) + " bytes)");
+}
+
 // ---- --method gl: Task 7's voxelization through OSMesa, and its comparison with the CPU (--compare) ----------
 
 // The distance from p to triangle (a, b, c): to its plane when p projects inside it, else to the nearest edge.
@@ -187,21 +206,7 @@ int run_gl(const VoxelizeOpts& o, const PolygonSoup& u, const voxels::Grid& grid
         if (!parity) msg << "; parity and flood fill differ on open meshes by design";
         st.done("compare", msg.str());
     }
-    if (!o.out.empty()) {
-        if (is_raw(o.out)) {
-            vx::write_raw(o.out, gl);
-        } else {
-            vx::Binvox b;
-            b.grid = gl;
-            b.translate = grid.origin;
-            b.scale = grid.voxel_size * double(o.res);
-            vx::write_binvox(o.out, b);
-        }
-        report["out"] = o.out;
-        const auto bytes = std::filesystem::file_size(o.out);
-        report["out_bytes"] = bytes;
-        st.done("write", o.out + " (" + std::to_string(bytes) + " bytes)");
-    }
+    if (!o.out.empty()) write_grid(o, gl, grid, st, report);
     const double peak = peak_rss_mib();
     report["peak_rss_mib"] = peak;
     st.out << "  peak memory... " << peak << " MiB (the process's peak resident size)\n";
@@ -265,7 +270,6 @@ int run_voxelize(const VoxelizeOpts& o) {
                     ", " + std::to_string(f.slabs) + " slabs of " + std::to_string(f.slab_layers) + " layers to " + o.out +
                     " (" + std::to_string(f.bytes) + " bytes)");
     } else {
-        const bool raw = !o.out.empty() && is_raw(o.out);  // (checked before the work)
         const vx::BitGrid surface = vx::voxelize_surface(u, grid.dims, o.threads);
         const std::uint64_t surface_voxels = vx::count_set(surface);
         report["surface_voxels"] = surface_voxels;
@@ -284,21 +288,7 @@ int run_voxelize(const VoxelizeOpts& o) {
             st.done("solid", std::to_string(solid_voxels) + " voxels (" + how + ")");
             result = s.grid;
         }
-        if (!o.out.empty()) {
-            if (raw) {
-                vx::write_raw(o.out, result);
-            } else {
-                vx::Binvox b;
-                b.grid = result;
-                b.translate = grid.origin;
-                b.scale = grid.voxel_size * double(o.res);
-                vx::write_binvox(o.out, b);
-            }
-            report["out"] = o.out;
-            const auto bytes = std::filesystem::file_size(o.out);
-            report["out_bytes"] = bytes;
-            st.done("write", o.out + " (" + std::to_string(bytes) + " bytes)");
-        }
+        if (!o.out.empty()) write_grid(o, result, grid, st, report);
     }
     const double peak = peak_rss_mib();
     report["peak_rss_mib"] = peak;
