@@ -182,6 +182,7 @@ TEST_CASE("sites: an array bound in a declaration is a constant; a subscript aft
     for (const auto& m : ms) {
         const bool bound = (m.line == 3 && m.original == "2") || (m.line == 4 && m.original == "3" && m.col < 15);
         if (bound) CHECK_MESSAGE(!m.schema_ok, m.key() << " is an array bound: rebuilt alone");
+        CHECK_MESSAGE(m.array_bound == bound, m.key() << (bound ? " is" : " is not") << " an array bound");
         if (m.line == 4 && !bound) CHECK_MESSAGE(m.schema_ok, m.key() << " is an initializer's value: in the schema");
         if (m.line == 5) CHECK_MESSAGE(m.schema_ok, m.key() << " is an ordinary subscript: in the schema");
     }
@@ -256,4 +257,21 @@ TEST_CASE("schema: a relaxed schema computes constexpr tables at start-up and di
     const std::string strict = file.schema({}, nullptr, false);
     CHECK(strict.find("constexpr T make()") != std::string::npos);
     CHECK(strict.find("geolab_mutant_rt::table(&") == std::string::npos);
+}
+
+TEST_CASE("sites: a '*' after an if/while condition dereferences; 'std::uint16_t* e' declares a parameter") {
+    const std::string text = block("void f(int* out, int x) {\n"
+                                   "  if (out) *out = x * 2;\n"
+                                   "  while (x > 0) *out += x--;\n"
+                                   "  auto g = [&](const double* a, const std::uint16_t* e, int n) { return a[0] * e[n]; };\n"
+                                   "  if (x) g(nullptr, nullptr, (x) * 3);\n"
+                                   "}");
+    int products = 0;
+    for (const auto& m : mutants_of(text)) {
+        if (m.original != "*") continue;
+        ++products;
+        const bool real = (m.line == 3 && m.col == 21) || (m.line == 5 && m.col == 78) || (m.line == 6 && m.col == 34);
+        CHECK_MESSAGE(real, m.key() << ": a dereference or a pointer declarator read as a product");
+    }
+    CHECK(products == 3);  // x * 2, a[0] * e[n], (x) * 3 (each mutated to /)
 }

@@ -24,7 +24,7 @@ struct MutateArgs {
     std::size_t max = 0;
     unsigned long long seed = 1;
     int jobs = 0;
-    bool resume = false, rerun_survivors = false, full = false, json = false, quiet = false;
+    bool resume = false, rerun_survivors = false, full = false, array_bounds = false, json = false, quiet = false;
     double timeout_factor = 10;
 };
 
@@ -99,6 +99,7 @@ int run(const MutateArgs& a) {
     if (a.rerun_survivors && !a.resume) throw std::runtime_error("--rerun-survivors goes with --resume --log FILE");
     opt.rerun_survivors = a.rerun_survivors;
     opt.full = a.full;
+    opt.array_bounds = a.array_bounds;
     opt.order = a.order;
     opt.timeout_factor = a.timeout_factor;
     opt.quiet = a.quiet;
@@ -132,6 +133,8 @@ void add_mutate(CLI::App& app, int& status) {
     cmd->add_flag("--rerun-survivors", a->rerun_survivors,
                   "With --resume: grade the survivors in --log again (after adding tests); the rest stays as logged");
     cmd->add_flag("--full", a->full, "Run every test of each mutant (default: stop at its first failing test)");
+    cmd->add_flag("--array-bounds", a->array_bounds,
+                  "Also mutate the array bounds of declarations (double a[3] -> a[2], a[4]); each is rebuilt alone");
     cmd->add_flag("--json", a->json, "Print the summary as one JSON object");
     cmd->add_option("--order", a->order, "Test order: killer (the test that killed the file's last mutant, then the "
                                          "cheapest), cheap (cheapest first), listing")

@@ -432,8 +432,13 @@ MutateReport run_mutate(const MutateOptions& opt) {
     for (std::size_t f = 0; f < names.size(); ++f) {
         files.emplace_back("src/" + names[f], texts[f], vocab, next_id);
         next_id += static_cast<int>(files.back().mutants().size());
-        rep.total_mutants += files.back().mutants().size();
+        for (const auto& m : files.back().mutants()) {
+            if (m.array_bound && !opt.array_bounds) ++rep.array_bound_mutants;
+            else ++rep.total_mutants;
+        }
     }
+    // the mutants this run considers: array bounds only when asked for (see Mutant::array_bound)
+    auto considered = [&](const Mutant& m) { return !m.array_bound || opt.array_bounds; };
     std::vector<Mutant> chosen;
     {
         // --only FILE[:LINE[-LAST]][,...]
@@ -463,7 +468,7 @@ MutateReport run_mutate(const MutateOptions& opt) {
                 matched = true;
                 bool any = false;
                 for (const auto& m : f.mutants())
-                    if (line == 0 || (m.line >= line && m.line <= last)) {
+                    if (considered(m) && (line == 0 || (m.line >= line && m.line <= last))) {
                         any = true;
                         if (taken.insert(m.id).second) chosen.push_back(m);
                     }
@@ -475,7 +480,8 @@ MutateReport run_mutate(const MutateOptions& opt) {
         }
         if (only.empty())
             for (const auto& f : files)
-                for (const auto& m : f.mutants()) chosen.push_back(m);
+                for (const auto& m : f.mutants())
+                    if (considered(m)) chosen.push_back(m);
         std::sort(chosen.begin(), chosen.end(), [](const Mutant& a, const Mutant& b) { return a.id < b.id; });
     }
     {
@@ -1082,7 +1088,9 @@ std::string format_report(const MutateReport& rep) {
     os << "geolab mutate " << rep.lab << ": " << rep.results.size() << " mutants";
     if (rep.results.size() != rep.total_mutants) os << " (a sample of " << rep.total_mutants << ")";
     os << " at " << rep.sites << " sites\n";
-    char buf[256];
+    if (rep.array_bound_mutants)
+        os << "  (" << rep.array_bound_mutants << " mutants of array bounds left out: --array-bounds runs them, each rebuilt alone)\n";
+    char buf[512];
     std::snprintf(buf, sizeof buf,
                   "  killed      %5zu  (%zu of them by the time limit)\n  survived    %5zu\n  equivalent  %5zu  (%zu reviewed, "
                   "listed in equivalent-mutants.txt; %zu proven: the same constexpr tables)\n  stillborn   %5zu  (do not compile)\n",
@@ -1125,6 +1133,7 @@ std::string report_json(const MutateReport& rep) {
     j["lab"] = rep.lab;
     j["mutants"] = rep.results.size();
     j["total_mutants"] = rep.total_mutants;
+    j["array_bound_mutants_left_out"] = rep.array_bound_mutants;
     j["sites"] = rep.sites;
     j["killed"] = rep.count(Outcome::killed) + rep.count(Outcome::timed_out);
     j["timed_out"] = rep.count(Outcome::timed_out);

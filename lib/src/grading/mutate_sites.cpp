@@ -268,7 +268,9 @@ const std::set<std::string>& keywords() {
 const std::set<std::string>& type_words() {
     static const std::set<std::string> k = {"auto",   "bool",  "char", "double", "float", "int",  "long",
                                             "short",  "signed", "unsigned", "void", "const", "size_t",
-                                            "ptrdiff_t", "uint32_t", "uint64_t", "int64_t", "int32_t", "uint8_t"};
+                                            "ptrdiff_t", "uint32_t", "uint64_t", "int64_t", "int32_t", "uint8_t",
+                                            "uint16_t", "int16_t", "int8_t", "uintptr_t", "intptr_t", "wchar_t",
+                                            "char8_t", "char16_t", "char32_t"};
     return k;
 }
 
@@ -354,6 +356,7 @@ struct TokenInfo {
     bool unevaluated = false;       // inside decltype/sizeof/noexcept/static_assert/alignas/requires/case/enum
     bool constant = false;          // inside a constexpr/consteval declaration or an if constexpr condition
     bool hard = false;              // constant whatever the schema does (array bound, if constexpr, consteval)
+    bool array_bound = false;       // inside the brackets of an array bound of a declaration
     bool template_open = false, template_close = false;
     std::size_t match = std::string::npos;  // the matching bracket of ( [ { and template < >
 };
@@ -611,7 +614,7 @@ SourceFile::SourceFile(std::string file, std::string text, const Vocabulary& voc
             const bool next_dim = txt(i - 1) == "]" && info[i - 1].match != std::string::npos && declarator[info[i - 1].match];
             if (!after_name && !next_dim) continue;
             declarator[i] = 1;
-            for (std::size_t j = i; j <= info[i].match; ++j) info[j].constant = info[j].hard = true;
+            for (std::size_t j = i; j <= info[i].match; ++j) info[j].constant = info[j].hard = info[j].array_bound = true;
         }
         for (std::size_t i = 0; i + 1 < n; ++i) {
             if (txt(i) != "struct" && txt(i) != "class" && txt(i) != "union") continue;
@@ -652,7 +655,13 @@ SourceFile::SourceFile(std::string file, std::string text, const Vocabulary& voc
         if (t.kind == TokenKind::identifier)
             return !keywords().count(t.text) || t.text == "this" || t.text == "true" || t.text == "false" ||
                    t.text == "nullptr";
-        if (t.text == ")" || t.text == "]") return true;
+        if (t.text == "]") return true;
+        if (t.text == ")") {  // not the condition of if/while/for/switch: "if (p) *p = 0" dereferences
+            const std::size_t open = info[i].match;
+            if (open == std::string::npos || open == 0) return true;
+            const std::string& k = txt(open - 1);
+            return !(k == "if" || k == "while" || k == "for" || k == "switch" || k == "constexpr");
+        }
         if ((t.text == "++" || t.text == "--") && i > 0) {
             const std::string& p = txt(i - 1);
             return p == ")" || p == "]" || (kind(i - 1) == TokenKind::identifier && !keywords().count(p));
@@ -765,6 +774,7 @@ SourceFile::SourceFile(std::string file, std::string text, const Vocabulary& voc
             m.replacement = replacements[k];
             m.schema_ok = schema_ok;
             m.needs_relax = !schema_ok && info[site.tok].constant && !info[site.tok].hard;
+            m.array_bound = info[site.tok].array_bound;
             site.ids.push_back(m.id);
             mutants_.push_back(std::move(m));
         }

@@ -5,7 +5,7 @@
 # test leaves a survivor, an ill-typed mutant is stillborn, an endless loop is timed out, nothing in a comment
 # or a string is mutated, a constexpr table's mutant is killed and one that leaves the table the same is proven
 # equivalent, the schema cache is written, --resume skips logged mutants, --rerun-survivors grades the logged
-# survivors again, --only FILE:LINE selects one line, and
+# survivors again, --only FILE:LINE selects one line, array bounds run only with --array-bounds (rebuilt alone), and
 # SIGTERM leaves solutions/ as it was.
 set -u
 geolab=$1 tree=$2 build=$3
@@ -71,6 +71,14 @@ if grep -v '"line":11,\|"line":50,' "$work/only.jsonl" | grep -q .; then fail "-
 "$geolab" mutate 99 --source "$tree" --build "$build" --only tiny.cpp:3 > /dev/null 2> "$work/only_err.txt" &&
     fail "--only on a line without mutants did not fail"
 grep -q "no mutant there" "$work/only_err.txt" || fail "--only on a line without mutants: no clear error"
+
+# array bounds (Squares::v[16], line 46): left out and counted by default; --array-bounds rebuilds each alone
+if grep -q '"line":46,' "$work/log.jsonl"; then fail "an array bound was mutated without --array-bounds"; fi
+grep -q '"array_bound_mutants_left_out":2' <<<"$summary" || fail "summary does not count the 2 array-bound mutants left out"
+"$geolab" mutate 99 --source "$tree" --build "$build" --array-bounds --only tiny.cpp:46 --log "$work/bounds.jsonl" --json \
+    > "$work/bounds.json" 2>&1 || fail "--array-bounds --only tiny.cpp:46 failed"
+[ "$(grep -c '"line":46,.*"mode":"rebuild"\|"mode":"rebuild".*"line":46,' "$work/bounds.jsonl")" = 2 ] ||
+    { cat "$work/bounds.jsonl"; fail "--array-bounds: the 2 mutants of v[16] were not rebuilt alone"; }
 
 # SIGTERM in the middle of a run: exit 143, solutions/ byte for byte unchanged, no test left running
 before=$(sha256sum "$src" "$tree/solutions/99_tiny/equivalent-mutants.txt")

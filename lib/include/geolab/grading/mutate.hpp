@@ -47,6 +47,10 @@ struct Mutant {
     std::string replacement;             //!< ... with this text
     bool schema_ok = true;     //!< false: in a constant context; rebuilt alone unless ...
     bool needs_relax = false;  //!< ... only constexpr makes it so: then it works in a relaxed schema
+    //! A constant in an array bound of a declaration ("double a[3]"): a change of type, run only with
+    //! MutateOptions::array_bounds (a smaller bound makes the reference's own indexing undefined behaviour, a
+    //! larger one changes nothing unless the size is read; each costs a rebuild of its file).
+    bool array_bound = false;
     //! "src/qef.cpp:12:5 | < -> <=": how equivalent-mutants.txt and the log name a mutant.
     std::string key() const;
 };
@@ -144,6 +148,7 @@ struct MutateOptions {
     bool resume = false;           //!< skip the mutants already in the log
     bool rerun_survivors = false;  //!< with resume: grade the log's survivors again (after tests were added)
     bool full = false;             //!< run every test of a mutant (default: stop at the first failure)
+    bool array_bounds = false;     //!< also the mutants of array bounds (Mutant::array_bound; rebuilt alone)
     std::string order = "killer";  //!< test order: killer (last killer of the file, then cheap), cheap, listing
     double timeout_factor = 10;    //!< a test is timed out after factor × its baseline time + 2 s (≤ its limit)
     bool quiet = false;
@@ -166,6 +171,7 @@ struct MutantResult {
 struct MutateReport {
     std::string lab;
     std::size_t sites = 0, total_mutants = 0;  //!< in the solution blocks (before sampling)
+    std::size_t array_bound_mutants = 0;       //!< of total_mutants: array bounds, left out without --array-bounds
     std::vector<MutantResult> results;         //!< sampled mutants, by id
     std::vector<std::string> stale_equivalents;   //!< listed in equivalent-mutants.txt, matching no mutant
     std::vector<std::string> killed_equivalents;  //!< listed as equivalent, yet killed by the tests
