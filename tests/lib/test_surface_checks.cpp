@@ -93,6 +93,27 @@ TEST_CASE("exact predicates decide what doubles cannot") {
             wrong_naive += (naive > 0) - (naive < 0) != expected;
         }
     CHECK_MESSAGE(wrong_naive > 0, "the example must be one where the plain formula errs");
+    // products that underflow: every difference is 2^-700 or 0, the determinant 2^-2100, below any double; the
+    // sign must still come out (the shortcut for products with an exact zero factor must not take it for 0)
+    const double t = std::ldexp(1.0, -700);
+    CHECK(geolab::orient3d(dvec3(0, 0, 0), dvec3(t, 0, 0), dvec3(0, t, 0), dvec3(0, 0, t)) ==
+          -geolab::orient3d(dvec3(0, 0, 0), dvec3(t, 0, 0), dvec3(0, t, 0), dvec3(0, 0, -t)));
+    CHECK(geolab::orient3d(dvec3(0, 0, 0), dvec3(t, 0, 0), dvec3(0, t, 0), dvec3(0, 0, t)) != 0);
+    CHECK(geolab::orient2d(glm::dvec2(0, 0), glm::dvec2(t, 0), glm::dvec2(0, t)) == 1);
+    // four points in one axis-aligned plane (far from the origin, irrational-looking coordinates): exactly 0
+    for (int axis = 0; axis < 3; ++axis) {
+        auto in_plane = [&](double u, double v) {
+            dvec3 p(0.0);
+            p[axis] = 1e8 + 0.1;
+            p[(axis + 1) % 3] = u;
+            p[(axis + 2) % 3] = v;
+            return p;
+        };
+        CHECK(geolab::orient3d(in_plane(0.3, 7.1), in_plane(-2.9, 1e-9), in_plane(5e7, -3.3), in_plane(1.0 / 3, 2.0 / 7)) == 0);
+        dvec3 off = in_plane(1.0 / 3, 2.0 / 7);
+        off[axis] = std::nextafter(off[axis], 1e9);
+        CHECK(geolab::orient3d(in_plane(0.3, 7.1), in_plane(-2.9, 1e-9), in_plane(5e7, -3.3), off) != 0);
+    }
     CHECK(geolab::collinear(dvec3(0, 0, 0), dvec3(1, 2, 3), dvec3(3, 6, 9)));
     CHECK_FALSE(geolab::collinear(dvec3(0, 0, 0), dvec3(1, 2, 3), dvec3(3, 6, 9.000000001)));
 }

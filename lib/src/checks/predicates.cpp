@@ -68,6 +68,12 @@ int orient3d(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, cons
     const double bound = kFilter * perm;
     if (det > bound) return 1;
     if (det < -bound) return -1;
+    // every product of the expansion has a factor that is exactly 0 (a difference of equal coordinates is exactly 0,
+    // and only then): the determinant is 0 without the integers (four points in one axis-aligned plane, say)
+    auto zero = [](double u, double v, double w) { return u == 0.0 || v == 0.0 || w == 0.0; };
+    if (zero(ad.x, bd.y, cd.z) && zero(ad.x, bd.z, cd.y) && zero(ad.y, bd.x, cd.z) && zero(ad.y, bd.z, cd.x) &&
+        zero(ad.z, bd.x, cd.y) && zero(ad.z, bd.y, cd.x))
+        return 0;
     // also reached when det or the bound overflowed (inf or NaN compare false): the exact sign decides
     return orient3d_exact(a, b, c, d);
 }
@@ -78,6 +84,7 @@ int orient2d(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c) {
     const double bound = kFilter * (std::abs(acx * bcy) + std::abs(acy * bcx));
     if (det > bound) return 1;
     if (det < -bound) return -1;
+    if ((acx == 0.0 || bcy == 0.0) && (acy == 0.0 || bcx == 0.0)) return 0;  // both products exactly 0
     return orient2d_exact(a, b, c);
 }
 

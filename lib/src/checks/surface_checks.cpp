@@ -2,6 +2,8 @@
 #include "geolab/surface_checks.hpp"
 
 #include <algorithm>
+
+#include <glm/geometric.hpp>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -88,6 +90,29 @@ bool segment_meets_triangle(const dvec3& p, const dvec3& q, const dvec3& a, cons
     return !((s1 > 0 || s2 > 0 || s3 > 0) && (s1 < 0 || s2 < 0 || s3 < 0));
 }
 
+//! A quick proof that triangles t and u do not meet: the plane of one has the other strictly on one side with a
+//! margin larger than the rounding of the dot products (the normal is computed in doubles, but any direction
+//! that separates the projections proves disjointness, so only the projections' rounding matters). False means
+//! "not proven", never "they meet". Spares the exact tests most pairs whose boxes overlap, such as a cap's long
+//! slivers against the thin wall triangles along its rim.
+bool separated_by_a_plane(const std::array<dvec3, 3>& t, const std::array<dvec3, 3>& u) {
+    double scale = 0.0;
+    for (const auto& p : t) scale = std::max({scale, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+    for (const auto& p : u) scale = std::max({scale, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+    auto apart = [&](const std::array<dvec3, 3>& a, const std::array<dvec3, 3>& b) {
+        const dvec3 n = glm::cross(a[1] - a[0], a[2] - a[0]);
+        const double n1 = std::abs(n.x) + std::abs(n.y) + std::abs(n.z);
+        if (!(n1 > 0.0) || !std::isfinite(n1 * scale)) return false;
+        // |computed n·p − n·p| ≤ 3ε·Σ|n_i||p_i| ≤ 3ε·n1·scale; 1e-13 is a wide margin over 3ε ≈ 6.7e-16
+        const double margin = 1e-13 * n1 * scale;
+        const double a0 = glm::dot(n, a[0]), a1 = glm::dot(n, a[1]), a2 = glm::dot(n, a[2]);
+        const double lo = std::min({a0, a1, a2}), hi = std::max({a0, a1, a2});
+        const double b0 = glm::dot(n, b[0]), b1 = glm::dot(n, b[1]), b2 = glm::dot(n, b[2]);
+        return std::min({b0, b1, b2}) > hi + margin || std::max({b0, b1, b2}) < lo - margin;
+    };
+    return apart(t, u) || apart(u, t);
+}
+
 //! Closed proper triangles meet.
 bool triangles_meet(const std::array<dvec3, 3>& t, const std::array<dvec3, 3>& u) {
     for (int i = 0; i < 3; ++i)
@@ -119,7 +144,7 @@ Meet improper_meeting(const Triangle& t, const Triangle& u, const std::vector<dv
             if (t.v[i] == u.v[j]) in_u[i] = j, ++shared;
     const std::array<dvec3, 3> T{pos[t.v[0]], pos[t.v[1]], pos[t.v[2]]};
     const std::array<dvec3, 3> U{pos[u.v[0]], pos[u.v[1]], pos[u.v[2]]};
-    if (shared == 0) return triangles_meet(T, U) ? Meet::disjoint : Meet::none;
+    if (shared == 0) return !separated_by_a_plane(T, U) && triangles_meet(T, U) ? Meet::disjoint : Meet::none;
     if (shared == 3) return Meet::edge;  // the same triangle twice
     if (shared == 1) {
         int i = 0;
