@@ -424,6 +424,7 @@ std::size_t simplify(Octree& tree, double tolerance, double tau) {
     if (tree.coordinates != Coordinates::cartesian)
         throw std::invalid_argument("simplify: only Cartesian octrees are simplified");
     std::size_t collapses = 0;
+    constexpr std::uint32_t prefetch_distance = 32;  // vertices, about 4 groups of finest leaves
     // children always have larger indices than their parent: one reverse sweep is bottom-up
     for (std::size_t ni = tree.nodes.size(); ni-- > 0;) {
         OctreeNode nd = tree.nodes[ni];
@@ -457,7 +458,14 @@ std::size_t simplify(Octree& tree, double tolerance, double tau) {
         Qef merged;
         for (int c = 0; c < 8; ++c) {
             std::uint32_t vi = tree.nodes[nd.first_child + c].vertex;
-            if (vi != invalid_index) merged.merge(tree.vertices[vi].qef);
+            if (vi == invalid_index) continue;
+            merged.merge(tree.vertices[vi].qef);
+            // Speed: this sweep meets the vertices in decreasing order (place_vertices made them in the order of the
+            // nodes); ask for the QEFs a few groups ahead, or each merge waits for main memory
+            if (vi >= prefetch_distance) {
+                const char* ahead = reinterpret_cast<const char*>(&tree.vertices[vi - prefetch_distance]);
+                for (std::size_t line = 0; line < sizeof(DualVertex); line += 64) __builtin_prefetch(ahead + line);
+            }
         }
         std::uint32_t new_vertex = invalid_index;
         if (merged.count > 0) {
