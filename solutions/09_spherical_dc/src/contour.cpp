@@ -323,12 +323,27 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params) {
     auto repeated_axis_edge = [&](const CellEdge& e, glm::ivec3 qc) {
         return spherical && e.a == 0 && (e.c & 4) && (qc.y == 0 || qc.y == n_res);
     };
+    // Speed (Cartesian trees of a field with a known Lipschitz constant Lf): a cell with |f(centre)| > Lf · (half
+    // diagonal) holds no zero of f, so every corner has the centre's sign (the test of build_octree, with a margin
+    // for rounding). One sample at the centre then stands for the 8 corners, which lie far apart in the sample cache
+    // (each look-up a cache miss); most coarse leaves are such cells.
+    const double lf = tree.field ? tree.field->lipschitz() : 0.0;
+    const bool lipschitz_cells = !spherical && lf > 0.0 && !tree.field->sign_may_jump();
     // a leaf coarser than the finest level: its edges are not finest edges, nothing to share
     auto coarse_leaf = [&](std::uint32_t li) {
         OctreeNode& nd = tree.nodes[li];
+        nd.vertex = invalid_index;
+        if (lipschitz_cells) {
+            const glm::ivec3 centre = tree.corner(nd, 0) + glm::ivec3(tree.cell_span(nd.level) / 2);
+            const double vc = tree.sample(centre);
+            const double half_diagonal = 0.5 * std::sqrt(3.0) * tree.size / double(std::int32_t(1) << nd.level);
+            if (std::abs(vc) > lf * half_diagonal * (1.0 + 1e-9)) {
+                nd.signs = inside(vc) ? 0xff : 0;
+                return;
+            }
+        }
         glm::ivec3 q[8];
         double v[8];
-        nd.vertex = invalid_index;
         nd.signs = 0;
         for (int c = 0; c < 8; ++c) {
             q[c] = tree.corner(nd, c), v[c] = tree.value(q[c]);
@@ -363,9 +378,9 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params) {
                 const int stride = a == 0 ? 1 : a == 1 ? 3 : 9;
                 for (std::uint32_t m = (in ^ (in >> stride)) & edge_starts[a]; m; m &= m - 1) {
                     const int p = std::countr_zero(m);
-                    const glm::ivec3 qc = base + sub_offset(p);
-                    glm::ivec3 qd = qc;
-                    qd[a] += 1;
+                    // Speed: qd without qd[a] += 1, whose variable index made the compiler write qc and qd to
+                    // memory and read them back whole before the stores had landed (a stall per edge)
+                    const glm::ivec3 qc = base + sub_offset(p), qd = qc + glm::ivec3(a == 0, a == 1, a == 2);
                     // an edge inside the parent cell belongs to no other group: no need to file it
                     if ((interior_edges[a] >> p) & 1u) {
                         index[27 * a + p] = std::uint32_t(computed.size());
