@@ -267,8 +267,10 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params) {
     computed.reserve(leaves_estimate / 2);
     prefer_huge_pages(tree.vertices);  // Speed: 2 MiB pages for the two largest arrays (lib memory.hpp)
     prefer_huge_pages(computed);
+    // Speed: the lambdas below take lattice points by reference: passed by value, a glm::ivec3 travels in two 64-bit
+    // registers that the compiler assembled from 32-bit stores to memory, a store-forwarding stall per call
     // the crossing on the edge from lattice point qc (value vc) to qd = qc + e_a (value vd)
-    auto compute = [&](glm::ivec3 qc, glm::ivec3 qd, double vc, double vd) {
+    auto compute = [&](const glm::ivec3& qc, const glm::ivec3& qd, double vc, double vd) {
         ++crossings;
         return spherical ? find_crossing_arc(*tree.field, tree.origin, tree.lattice_spherical(qc),
                                              tree.lattice_spherical(qd), vc, vd, params.crossing_tolerance)
@@ -276,7 +278,7 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params) {
                                          params.crossing_tolerance);
     };
     // the same for a finest edge, computed once: its index in `computed`
-    auto finest_crossing = [&](glm::ivec3 qc, glm::ivec3 qd, int a, double vc, double vd) {
+    auto finest_crossing = [&](const glm::ivec3& qc, const glm::ivec3& qd, int a, double vc, double vd) {
         std::uint32_t& slot = merged_point(qc) ? edge_crossing_into.slot(tree.canonical(qd))[a]
                                                : edge_crossing.slot(tree.canonical(qc))[a];
         if (slot == invalid_index) {
@@ -289,7 +291,7 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params) {
     // the cell, else the mass point (the mean of the piece's crossings), clamped into the cell. Clamping the minimiser
     // instead would pile vertices onto the cell's faces and corners, two pieces of one cell onto the same point,
     // and fold the mesh there (handout §1.1).
-    auto cell_vertex = [&](const Qef& qef, glm::ivec3 q0, glm::ivec3 q7) {
+    auto cell_vertex = [&](const Qef& qef, const glm::ivec3& q0, const glm::ivec3& q7) {
         glm::dvec3 mass;
         const glm::dvec3 x = qef.solve(params.tau, &mass);
         if (!spherical) {
@@ -313,8 +315,8 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params) {
         return tree.spherical_point(s);
     };
     // leaf li's vertices, one per piece of its surface: piece k holds the crossings of qef[k] on the edges edges[k]
-    auto add_vertices = [&](std::uint32_t li, const Qef* qef, const std::uint16_t* edges, int pieces, glm::ivec3 q0,
-                            glm::ivec3 q7) {
+    auto add_vertices = [&](std::uint32_t li, const Qef* qef, const std::uint16_t* edges, int pieces,
+                            const glm::ivec3& q0, const glm::ivec3& q7) {
         tree.nodes[li].vertex = std::uint32_t(tree.vertices.size());
         for (int k = 0; k < pieces; ++k)
             tree.vertices.push_back({cell_vertex(qef[k], q0, q7), qef[k], edges[k], std::uint8_t(pieces)});
@@ -624,7 +626,8 @@ PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles) {
     // outward direction: +a when its lower end is inside). A quad is split along the diagonal whose two triangles
     // both face outward (normal · outward direction > 0) when only one of the two does — the other would fold the
     // mesh —, else along the shorter diagonal.
-    auto emit_polygon = [&](const std::uint32_t* w, int m, glm::ivec3 q0, int a, std::int32_t span, bool lower_inside) {
+    auto emit_polygon = [&](const std::uint32_t* w, int m, const glm::ivec3& q0, int a, std::int32_t span,
+                            bool lower_inside) {
         if (m == 3) {
             soup.add_face({w[0], w[1], w[2]});
         } else {
