@@ -267,8 +267,10 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params) {
     computed.reserve(leaves_estimate / 2);
     prefer_huge_pages(tree.vertices);  // Speed: 2 MiB pages for the two largest arrays (lib memory.hpp)
     prefer_huge_pages(computed);
+    // Speed: the lambdas below take lattice points by reference: passed by value, a glm::ivec3 travels in two 64-bit
+    // registers that the compiler assembled from 32-bit stores to memory, a store-forwarding stall per call
     // the crossing on the edge from lattice point qc (value vc) to qd = qc + e_a (value vd)
-    auto compute = [&](glm::ivec3 qc, glm::ivec3 qd, double vc, double vd) {
+    auto compute = [&](const glm::ivec3& qc, const glm::ivec3& qd, double vc, double vd) {
         ++crossings;
         return spherical ? find_crossing_arc(*tree.field, tree.origin, tree.lattice_spherical(qc),
                                              tree.lattice_spherical(qd), vc, vd, params.crossing_tolerance)
@@ -276,7 +278,7 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params) {
                                          params.crossing_tolerance);
     };
     // the same for a finest edge, computed once: its index in `computed`
-    auto finest_crossing = [&](glm::ivec3 qc, glm::ivec3 qd, int a, double vc, double vd) {
+    auto finest_crossing = [&](const glm::ivec3& qc, const glm::ivec3& qd, int a, double vc, double vd) {
         std::uint32_t& slot = merged_point(qc) ? edge_crossing_into.slot(tree.canonical(qd))[a]
                                                : edge_crossing.slot(tree.canonical(qc))[a];
         if (slot == invalid_index) {
@@ -289,7 +291,7 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params) {
     // the cell, else the mass point (the mean of the piece's crossings), clamped into the cell. Clamping the minimiser
     // instead would pile vertices onto the cell's faces and corners, two pieces of one cell onto the same point,
     // and fold the mesh there (handout §1.1).
-    auto cell_vertex = [&](const Qef& qef, glm::ivec3 q0, glm::ivec3 q7) {
+    auto cell_vertex = [&](const Qef& qef, const glm::ivec3& q0, const glm::ivec3& q7) {
         glm::dvec3 mass;
         const glm::dvec3 x = qef.solve(params.tau, &mass);
         if (!spherical) {
@@ -313,8 +315,8 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params) {
         return tree.spherical_point(s);
     };
     // leaf li's vertices, one per piece of its surface: piece k holds the crossings of qef[k] on the edges edges[k]
-    auto add_vertices = [&](std::uint32_t li, const Qef* qef, const std::uint16_t* edges, int pieces, glm::ivec3 q0,
-                            glm::ivec3 q7) {
+    auto add_vertices = [&](std::uint32_t li, const Qef* qef, const std::uint16_t* edges, int pieces,
+                            const glm::ivec3& q0, const glm::ivec3& q7) {
         tree.nodes[li].vertex = std::uint32_t(tree.vertices.size());
         for (int k = 0; k < pieces; ++k)
             tree.vertices.push_back({cell_vertex(qef[k], q0, q7), qef[k], edges[k], std::uint8_t(pieces)});
@@ -323,12 +325,27 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params) {
     auto repeated_axis_edge = [&](const CellEdge& e, glm::ivec3 qc) {
         return spherical && e.a == 0 && (e.c & 4) && (qc.y == 0 || qc.y == n_res);
     };
+    // Speed (Cartesian trees of a field with a known Lipschitz constant Lf): a cell with |f(centre)| > Lf · (half
+    // diagonal) holds no zero of f, so every corner has the centre's sign (the test of build_octree, with a margin
+    // for rounding). One sample at the centre then stands for the 8 corners, which lie far apart in the sample cache
+    // (each look-up a cache miss); most coarse leaves are such cells.
+    const double lf = tree.field ? tree.field->lipschitz() : 0.0;
+    const bool lipschitz_cells = !spherical && lf > 0.0 && !tree.field->sign_may_jump();
     // a leaf coarser than the finest level: its edges are not finest edges, nothing to share
     auto coarse_leaf = [&](std::uint32_t li) {
         OctreeNode& nd = tree.nodes[li];
+        nd.vertex = invalid_index;
+        if (lipschitz_cells) {
+            const glm::ivec3 centre = tree.corner(nd, 0) + glm::ivec3(tree.cell_span(nd.level) / 2);
+            const double vc = tree.sample(centre);
+            const double half_diagonal = 0.5 * std::sqrt(3.0) * tree.size / double(std::int32_t(1) << nd.level);
+            if (std::abs(vc) > lf * half_diagonal * (1.0 + 1e-9)) {
+                nd.signs = inside(vc) ? 0xff : 0;
+                return;
+            }
+        }
         glm::ivec3 q[8];
         double v[8];
-        nd.vertex = invalid_index;
         nd.signs = 0;
         for (int c = 0; c < 8; ++c) {
             q[c] = tree.corner(nd, c), v[c] = tree.value(q[c]);
@@ -363,9 +380,9 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params) {
                 const int stride = a == 0 ? 1 : a == 1 ? 3 : 9;
                 for (std::uint32_t m = (in ^ (in >> stride)) & edge_starts[a]; m; m &= m - 1) {
                     const int p = std::countr_zero(m);
-                    const glm::ivec3 qc = base + sub_offset(p);
-                    glm::ivec3 qd = qc;
-                    qd[a] += 1;
+                    // Speed: qd without qd[a] += 1, whose variable index made the compiler write qc and qd to
+                    // memory and read them back whole before the stores had landed (a stall per edge)
+                    const glm::ivec3 qc = base + sub_offset(p), qd = qc + glm::ivec3(a == 0, a == 1, a == 2);
                     // an edge inside the parent cell belongs to no other group: no need to file it
                     if ((interior_edges[a] >> p) & 1u) {
                         index[27 * a + p] = std::uint32_t(computed.size());
@@ -424,6 +441,7 @@ std::size_t simplify(Octree& tree, double tolerance, double tau) {
     if (tree.coordinates != Coordinates::cartesian)
         throw std::invalid_argument("simplify: only Cartesian octrees are simplified");
     std::size_t collapses = 0;
+    constexpr std::uint32_t prefetch_distance = 32;  // vertices, about 4 groups of finest leaves
     // children always have larger indices than their parent: one reverse sweep is bottom-up
     for (std::size_t ni = tree.nodes.size(); ni-- > 0;) {
         OctreeNode nd = tree.nodes[ni];
@@ -457,7 +475,14 @@ std::size_t simplify(Octree& tree, double tolerance, double tau) {
         Qef merged;
         for (int c = 0; c < 8; ++c) {
             std::uint32_t vi = tree.nodes[nd.first_child + c].vertex;
-            if (vi != invalid_index) merged.merge(tree.vertices[vi].qef);
+            if (vi == invalid_index) continue;
+            merged.merge(tree.vertices[vi].qef);
+            // Speed: this sweep meets the vertices in decreasing order (place_vertices made them in the order of the
+            // nodes); ask for the QEFs a few groups ahead, or each merge waits for main memory
+            if (vi >= prefetch_distance) {
+                const char* ahead = reinterpret_cast<const char*>(&tree.vertices[vi - prefetch_distance]);
+                for (std::size_t line = 0; line < sizeof(DualVertex); line += 64) __builtin_prefetch(ahead + line);
+            }
         }
         std::uint32_t new_vertex = invalid_index;
         if (merged.count > 0) {
@@ -601,7 +626,8 @@ PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles) {
     // outward direction: +a when its lower end is inside). A quad is split along the diagonal whose two triangles
     // both face outward (normal · outward direction > 0) when only one of the two does — the other would fold the
     // mesh —, else along the shorter diagonal.
-    auto emit_polygon = [&](const std::uint32_t* w, int m, glm::ivec3 q0, int a, std::int32_t span, bool lower_inside) {
+    auto emit_polygon = [&](const std::uint32_t* w, int m, const glm::ivec3& q0, int a, std::int32_t span,
+                            bool lower_inside) {
         if (m == 3) {
             soup.add_face({w[0], w[1], w[2]});
         } else {
