@@ -74,6 +74,67 @@ TEST_CASE("place_vertices: a vertex in exactly the leaves whose corners change s
     }
 }
 
+TEST_CASE("place_vertices: a coarse leaf's signs are its 8 corners' even where its centre disagrees" *
+          geolab::points(1) * geolab::builds_on("Task 1, Task 2") *
+          geolab::hint("OctreeNode::signs is bit c = inside(value(corner(n, c))) for every leaf. A shortcut that "
+                       "decides a coarse leaf from one sample at its centre holds only for a Lipschitz field with a "
+                       "known constant (lipschitz() > 0) whose sign cannot jump (!sign_may_jump()). Handout §5.1.")) {
+    // f = −5 within 0.1 of the centre of child 0 of the root, +5 elsewhere: no corner of that level-1 leaf is
+    // inside, its centre is; |f| = 5 exceeds Lf times its half diagonal (0.87), the shortcut's condition
+    struct Pocket : geolab::ScalarField {
+        double lf;
+        bool jumps;
+        Pocket(double l, bool j) : lf(l), jumps(j) {}
+        double value(const glm::dvec3& p) const override {
+            return glm::length(p - glm::dvec3(-0.5)) < 0.1 ? -5.0 : 5.0;
+        }
+        geolab::Box bounds() const override { return {glm::dvec3(-1.0), glm::dvec3(1.0)}; }
+        double lipschitz() const override { return lf; }
+        bool sign_may_jump() const override { return jumps; }
+    };
+    const Pocket fields[] = {{1.0, true}, {0.0, false}};
+    for (const Pocket& f : fields) {
+        INFO("a pocket inside a coarse leaf, lipschitz() = " << f.lf << ", sign_may_jump() = " << f.jumps);
+        Octree t;
+        t.init_cartesian(f, 3, glm::dvec3(-1.0), 2.0);
+        t.split(0);  // 8 leaves of level 1 (the finest level is 3)
+        REQUIRE(t.value({2, 2, 2}) < 0.0);  // the centre of leaf 1 (child 0) is inside
+        place_vertices(t, {});
+        std::ostringstream first;
+        const std::size_t bad = wrong_signs(t, first);
+        CHECK_MESSAGE(bad == 0, bad << " leaves have OctreeNode::signs that do not match their corners" << first.str());
+        CHECK(t.vertices.empty());
+    }
+    // An exact signed distance (Lf = 1) and the root left a leaf (level 0 of a level-3 tree, half diagonal 1.73):
+    // a ball of radius 0.3 around the corner (1, 1, 1), |f(centre)| = 1.43 is below Lf times the half diagonal, so
+    // the corners decide: one corner inside, a vertex
+    const FieldPtr ball = geolab::sphere(glm::dvec3(1.0), 0.3);
+    Octree t;
+    t.init_cartesian(*ball, 3, glm::dvec3(-1.0), 2.0);
+    place_vertices(t, {});
+    INFO("a ball of radius 0.3 around the corner (1, 1, 1) of a root leaf");
+    CHECK(t.nodes[0].signs == 0x80);
+    CHECK(t.vertices.size() == 1);
+    // The shortcut's margin: a plane (exact distance, Lf = 1) at distance hd − 1e-12 from the root's centre, normal
+    // along the diagonal, cuts off only the corner (1, 1, 1) at 1e-12 from it: |f(centre)| is within 1e-9 of Lf·hd
+    // but below it, so the corners still decide (a margin that rounds the other way loses the corner)
+    struct Plane : geolab::ScalarField {
+        double d;
+        explicit Plane(double dist) : d(dist) {}
+        double value(const glm::dvec3& p) const override { return glm::dot(p, glm::dvec3(1.0 / std::sqrt(3.0))) - d; }
+        geolab::Box bounds() const override { return {glm::dvec3(-1.0), glm::dvec3(1.0)}; }
+        double lipschitz() const override { return 1.0; }
+    };
+    const Plane plane(std::sqrt(3.0) - 1e-12);
+    Octree tp;
+    tp.init_cartesian(plane, 3, glm::dvec3(-1.0), 2.0);
+    REQUIRE(tp.value({8, 8, 8}) > 0.0);
+    place_vertices(tp, {});
+    INFO("a plane 1e-12 short of the corner (1, 1, 1) of a root leaf");
+    CHECK(tp.nodes[0].signs == 0x7f);
+    CHECK(tp.vertices.size() == 1);
+}
+
 TEST_CASE("place_vertices: a QEF minimiser that leaves its cell gives way to the mass point" *
           geolab::points(2) * geolab::builds_on("Task 1, Task 2") *
           geolab::hint("The QEF minimiser can be far outside the cell (nearly parallel planes, noisy normals): then "
