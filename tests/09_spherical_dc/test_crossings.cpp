@@ -61,6 +61,31 @@ TEST_CASE("to_spherical and to_cartesian: conventions; phi wrapped into 0..2pi; 
     CHECK(south.phi == 0.0);
     const Spherical below = to_spherical({1.0, -1e-12, 0.0});  // just below the seam: phi close to 2pi
     CHECK(below.phi > 6.28);
+    // the origin with signed zeros is r = 0 too (atan2(0, -0) alone would give theta = pi)
+    for (const glm::dvec3 zero : {glm::dvec3(0.0, 0.0, -0.0), glm::dvec3(-0.0, -0.0, -0.0), glm::dvec3(-0.0, 0.0, 0.0)}) {
+        const Spherical z = to_spherical(zero);
+        INFO("to_spherical" << str(zero) << " (signed zeros) gave (" << z.r << ", " << z.theta << ", " << z.phi
+                            << "), expected (0, 0, 0)");
+        CHECK(z.r == 0.0);
+        CHECK(z.theta == 0.0);
+        CHECK(z.phi == 0.0);
+    }
+    // y so small and negative that atan2(y, x) + 2pi rounds to the double 2pi: phi must still be < 2pi
+    for (double y : {-1e-17, -1e-300}) {
+        const Spherical w = to_spherical({1.0, y, 0.5});
+        INFO("to_spherical(1, " << y << ", 0.5): phi = " << w.phi << " (phi lies in [0, 2pi): "
+                                << "wrap 2pi to 0, a value near 0 or just below 2pi)");
+        CHECK(w.phi >= 0.0);
+        CHECK(w.phi < 2 * kPi);
+        CHECK((w.phi < 1e-12 || w.phi > 2 * kPi - 1e-12));
+    }
+    // theta == 0 and pi are the only special angles: theta = 1 is the plain formula
+    for (double th : {1.0, 0.5, 2.0}) {
+        const glm::dvec3 c = to_cartesian({2.0, th, 0.7});
+        const glm::dvec3 want(2.0 * std::sin(th) * std::cos(0.7), 2.0 * std::sin(th) * std::sin(0.7), 2.0 * std::cos(th));
+        INFO("to_cartesian(2, " << th << ", 0.7) gave " << str(c) << ", expected " << str(want));
+        CHECK(glm::length(c - want) < 1e-12);
+    }
     const glm::dvec3 s_pole = to_cartesian({1.5, pi, 0.7});
     CHECK(s_pole.x == 0.0);
     CHECK(s_pole.y == 0.0);

@@ -75,6 +75,41 @@ TEST_CASE("minimal_enclosing_sphere: known configurations" * geolab::points(2) *
     CHECK(std::abs(s.radius - 1.0) < 1e-9);
     CHECK(glm::length(s.center - o) < 1e-6);
     check_encloses(pts, s, 1.0);
+    // a third point 1e-4 or 1e-7 of the radius outside the sphere of the other two (diameter 2R), in every input
+    // order: every point must be enclosed to 1e-9 of R at every size and far from the origin (containment
+    // tolerances relative to the cloud's size, not to its distance from the origin)
+    for (double R : {1e-9, 1.0, 1e3})
+        for (const glm::dvec3 c : {glm::dvec3(0.0), glm::dvec3(1e6, -2e6, 5e5)}) {
+            if (R < 1e-3 && glm::length(c) > 0) continue;  // 1e-9 far from the origin is below the rounding
+            for (double excess : {1e-4, 1e-7}) {
+                std::vector<glm::dvec3> three = {c + glm::dvec3(R, 0, 0), c + glm::dvec3(0, R * (1 + excess), 0),
+                                                 c - glm::dvec3(R, 0, 0)};
+                // the circumcircle: centre (0, y0, 0) with R^2 + y0^2 = (R (1 + excess) - y0)^2
+                const double yt = R * (1 + excess), y0 = (yt * yt - R * R) / (2 * yt);
+                std::sort(three.begin(), three.end(), [](const glm::dvec3& p, const glm::dvec3& q) {
+                    return std::tie(p.x, p.y, p.z) < std::tie(q.x, q.y, q.z);
+                });
+                do {
+                    const Sphere t = minimal_enclosing_sphere(three);
+                    INFO("points (+-R, 0, 0) and (0, R (1 + " << excess << "), 0) about " << str(c) << ", R = " << R
+                         << ", given in the order " << str(three[0]) << " " << str(three[1]) << " " << str(three[2])
+                         << ": got centre " << str(t.center) << " radius " << t.radius << ", expected radius "
+                         << std::sqrt(R * R + y0 * y0));
+                    CHECK(std::abs(t.radius - std::sqrt(R * R + y0 * y0)) < 1e-9 * R);
+                    check_encloses(three, t, R);
+                } while (std::next_permutation(three.begin(), three.end(), [](const glm::dvec3& p, const glm::dvec3& q) {
+                    return std::tie(p.x, p.y, p.z) < std::tie(q.x, q.y, q.z);
+                }));
+            }
+            // a regular tetrahedron (all four points on the sphere) of the same size: radius R sqrt(3)
+            const std::vector<glm::dvec3> tet = {c + R * glm::dvec3(1, 1, 1), c + R * glm::dvec3(1, -1, -1),
+                                                 c + R * glm::dvec3(-1, 1, -1), c + R * glm::dvec3(-1, -1, 1)};
+            const Sphere u = minimal_enclosing_sphere(tet);
+            INFO("regular tetrahedron R (+-1, +-1, +-1) about " << str(c) << ", R = " << R << ": got centre "
+                 << str(u.center) << " radius " << u.radius << ", expected " << R * std::sqrt(3.0));
+            CHECK(std::abs(u.radius - R * std::sqrt(3.0)) < 1e-9 * R);
+            CHECK(glm::length(u.center - c) < 1e-9 * R);
+        }
     const Sphere e = minimal_enclosing_sphere({});
     CHECK(e.radius == 0.0);
 }
@@ -165,6 +200,25 @@ TEST_CASE("correct_origin: moves to the nearer side along the gradient; stops at
     INFO("start at f = 2.5 unit (margin 2): " << path.size() << " positions");
     REQUIRE(path.size() == 1);
     CHECK(path[0] == far);
+    // |f| reaching margin * unit exactly counts as far enough, at the start and after a step: f = z, unit 1/8,
+    // delta * unit = 0.1875, margin * unit = 0.25 (every number exact in binary)
+    struct Plane final : ScalarField {
+        double value(const glm::dvec3& p) const override { return p.z; }
+        glm::dvec3 gradient(const glm::dvec3&) const override { return {0.0, 0.0, 1.0}; }
+        Box bounds() const override { return {glm::dvec3(-1.0), glm::dvec3(1.0)}; }
+    } plane;
+    OriginParams eighth;
+    eighth.unit = 0.125;
+    for (double z0 : {0.25, -0.25, 0.0625, -0.0625}) {
+        const glm::dvec3 x0(0.1, -0.2, z0);
+        const auto exact = correct_origin(plane, x0, eighth);
+        const std::size_t want = std::abs(z0) == 0.25 ? 1 : 2;
+        INFO("f = z from z = " << z0 << ", margin * unit = 0.25, delta * unit = 0.1875: " << exact.size()
+                               << " positions, last " << str(exact.back()) << "; expected " << want
+                               << " (|f| >= margin * unit stops, equality included)");
+        CHECK(exact.size() == want);
+        CHECK(std::abs(exact.back().z) == 0.25);
+    }
 }
 
 TEST_CASE("correct_origin: where grad f vanishes the step goes to the best of the 6 axis probes at delta times unit" *
@@ -172,27 +226,30 @@ TEST_CASE("correct_origin: where grad f vanishes the step goes to the best of th
           geolab::hint("|grad f| < 1e-12: probe x +- delta * unit * e for the 6 axis directions e and step to the probe "
                        "with the largest s * f (s = the side we move to). The probe distance matters: a field can grow "
                        "fastest along one axis near x and along another farther away. Handout §6.")) {
-    // f = s0 (c + A max(x, 0)^4 + B max(y, 0)^2 + g z): zero value gradient at the origin when g = 0. +X wins
-    // beyond d* = sqrt(B / A) = 0.05 and +Y below it; every other probe gives c.
+    // f = s0 (c + A max(x, 0)^4 + B max(y, 0)^2 + h max(z, 0)^2 + g z): zero gradient at the origin when g = 0.
+    // With h = 0, +X wins beyond d* = sqrt(B / A) = 0.05 and +Y below it; with h = 0.01, +Z wins at both distances.
+    // |grad f| = g exactly at the origin: 1e-12 and 1.5e-12 are not below 1e-12, so the step follows the gradient.
     struct Probe final : ScalarField {
-        double sign = 1.0, g = 0.0;
+        double sign = 1.0, g = 0.0, h = 0.0;
         double value(const glm::dvec3& p) const override {
-            const double x = std::max(p.x, 0.0), y = std::max(p.y, 0.0);
-            return sign * (0.01 + x * x * x * x + 0.0025 * y * y + g * p.z);
+            const double x = std::max(p.x, 0.0), y = std::max(p.y, 0.0), z = std::max(p.z, 0.0);
+            return sign * (0.01 + x * x * x * x + 0.0025 * y * y + h * z * z + g * p.z);
         }
         glm::dvec3 gradient(const glm::dvec3& p) const override {
-            const double x = std::max(p.x, 0.0), y = std::max(p.y, 0.0);
-            return sign * glm::dvec3(4.0 * x * x * x, 0.005 * y, g);
+            const double x = std::max(p.x, 0.0), y = std::max(p.y, 0.0), z = std::max(p.z, 0.0);
+            return sign * glm::dvec3(4.0 * x * x * x, 0.005 * y, 2.0 * h * z + g);
         }
         Box bounds() const override { return {glm::dvec3(-1.0), glm::dvec3(1.0)}; }
     };
     int checked = 0;
     for (double sign : {1.0, -1.0})
-        for (double g : {0.0, 1e-13, 1e-11})
-            for (double step : {0.035, 0.07}) {
+        for (double g : {0.0, 1e-13, 1e-12, 1.5e-12, 1e-11})
+            for (double step : {0.035, 0.07})
+                for (double h : {0.0, 0.01}) {
                 Probe f;
                 f.sign = sign;
                 f.g = g;
+                f.h = h;
                 OriginParams op;
                 op.unit = step / op.delta;
                 const glm::dvec3 x0(0.0);
@@ -210,15 +267,15 @@ TEST_CASE("correct_origin: where grad f vanishes the step goes to the best of th
                             if (sign * f.value(q) > best) best = sign * f.value(q), want = q;
                         }
                 }
-                INFO("f = " << (sign > 0 ? "" : "-") << "(0.01 + max(x,0)^4 + 0.0025 max(y,0)^2 + " << g
-                            << " z) from the origin, delta * unit = " << step << ": expected " << rule << " "
+                INFO("f = " << (sign > 0 ? "" : "-") << "(0.01 + max(x,0)^4 + 0.0025 max(y,0)^2 + " << h
+                            << " max(z,0)^2 + " << g << " z) from the origin, delta * unit = " << step << ": expected " << rule << " "
                             << str(want) << ", got " << (path.size() > 1 ? str(path[1]) : std::string("no step")));
                 REQUIRE(path.size() >= 2);
                 CHECK(path[0] == x0);
                 CHECK(glm::length(path[1] - want) < 1e-12);
                 ++checked;
             }
-    CHECK(checked == 12);
+    CHECK(checked == 40);
 }
 
 TEST_CASE("correct_origin: exactly on the surface where grad f vanishes: the side comes from the probe at delta times unit" *

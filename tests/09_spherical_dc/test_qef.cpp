@@ -302,6 +302,173 @@ TEST_CASE("qef: weighted planes (AtA and Atb and btb scaled by one w) give the s
     CHECK(checked == 42);
 }
 
+TEST_CASE("qef: any axis order; normals in a coordinate plane; equal diagonals; weights 1e-100 to 1e12; one plane; "
+          "tau 0.01 to 1.5: all match Eigen" *
+          geolab::points(1) *
+          geolab::hint("solve must not depend on which axis the data favour: permuting x, y, z permutes the answer. "
+                       "Cases that trip hand-written solvers: AtA entries that are exactly 0 (normals in a coordinate "
+                       "plane) or equal diagonal entries (a Jacobi rotation with a[q][q] - a[p][p] = 0 must still zero "
+                       "a[p][q]), all entries 1e-9 or 1e-100 (convergence tests must be relative; products of four entries "
+                       "underflow to 0), the largest eigenvalue "
+                       "in any slot (lambda_max is the largest of all three), one plane alone (rank 1), and tau >= 1 "
+                       "(tau = 1 keeps lambda_max only: it is not below 1 * lambda_max; tau = 1.5 truncates every "
+                       "eigenvalue: x is the mass point, rank 0). Handout §1.")) {
+    // planes with weights: AtA = sum w n nT, Atb = sum w n (n.p), btb = sum w (n.p)^2 (the Qef's fields)
+    struct Weighted {
+        std::string name;
+        std::vector<glm::dvec3> p, n;
+        std::vector<double> w;
+        void add(const glm::dvec3& point, const glm::dvec3& normal, double weight = 1.0) {
+            p.push_back(point), n.push_back(glm::normalize(normal)), w.push_back(weight);
+        }
+    };
+    std::vector<Weighted> shapes;
+    {  // near-planar, curved points; the normal favours one axis (which one depends on the permutation)
+        Weighted s{"a near-planar patch", {}, {}, {}};
+        const glm::dvec3 n0 = glm::normalize(glm::dvec3(0.25, -0.3, 0.92));
+        const glm::dvec3 a = glm::normalize(glm::cross(n0, glm::dvec3(1, 0, 0))), b = glm::cross(n0, a);
+        for (int i = 0; i < 10; ++i) {
+            const double phi = 2.0 * kPi * i / 10.0, u = 0.1 * (i % 4), v = 0.07 * (i % 3);
+            s.add(glm::dvec3(0.4, 0.6, -0.2) + (u - 0.15) * a + (v - 0.07) * b + 0.05 * (u * u + v * v) * n0,
+                  n0 + 0.012 * std::cos(phi) * a + 0.004 * std::sin(phi) * b);
+        }
+        shapes.push_back(s);
+    }
+    {  // near-planar, close to where a rank-1 shortcut must give up (eigenvalue ratios about 3e-3 and 5e-4), with
+       // points on a cap of radius 6 so that the solution lies off the mass point
+        Weighted s{"a curved patch near the rank-1 limit", {}, {}, {}};
+        const glm::dvec3 n0 = glm::normalize(glm::dvec3(-0.4, 0.2, 0.9));
+        const glm::dvec3 a = glm::normalize(glm::cross(n0, glm::dvec3(0, 1, 0))), b = glm::cross(n0, a);
+        const glm::dvec3 centre = glm::dvec3(0.2, 0.1, -0.3) - 6.0 * n0;  // the cap's sphere
+        for (int i = 0; i < 12; ++i) {
+            const double phi = 2.0 * kPi * (i + 0.3) / 12.0, t = 0.25 + 0.05 * (i % 3);
+            const glm::dvec3 d = glm::normalize(6.0 * n0 + t * 1.4 * (std::cos(phi) * a + 0.35 * std::sin(phi) * b));
+            s.add(centre + 6.0 * d, d);
+        }
+        shapes.push_back(s);
+    }
+    {  // near-planar with every normal in the plane y = 0 (AtA's xy and yz entries exactly 0)
+        Weighted s{"a near-planar patch with normals in a coordinate plane", {}, {}, {}};
+        const glm::dvec3 n0 = glm::normalize(glm::dvec3(0.8, 0.0, 0.6)), a(-0.6, 0.0, 0.8);
+        for (int i = 0; i < 8; ++i) {
+            const double t = -0.35 + 0.1 * i;
+            s.add(glm::dvec3(1.0, 0.2 * (i % 3), 0.5) + t * a + 0.06 * t * t * n0, n0 + 0.02 * t * a);
+        }
+        shapes.push_back(s);
+    }
+    {  // a sharp edge with every normal in the plane y = 0 (rank 2)
+        Weighted s{"an edge with normals in a coordinate plane", {}, {}, {}};
+        const glm::dvec3 n1 = glm::normalize(glm::dvec3(1, 0, 0.2)), n2 = glm::normalize(glm::dvec3(-0.5, 0, 0.866));
+        for (int i = 0; i < 4; ++i) {
+            s.add(glm::dvec3(0.3, 0.1 * i, 0.0) + 0.05 * i * glm::cross(n1, glm::dvec3(0, 1, 0)), n1);
+            s.add(glm::dvec3(0.3, 0.1 * i + 0.05, 0.0) - 0.04 * i * glm::cross(n2, glm::dvec3(0, 1, 0)), n2);
+        }
+        shapes.push_back(s);
+    }
+    {  // an edge of two planes 80 degrees apart: eigenvalue ratio (1 - cos) / (1 + cos) = 0.70, kept at tau = 0.6
+        Weighted s{"an edge of two planes 80 degrees apart", {}, {}, {}};
+        const double t = 80.0 * kPi / 180.0;
+        const glm::dvec3 n1 = glm::normalize(glm::dvec3(0.3, -0.2, 1.0)), u = glm::normalize(glm::cross(n1, glm::dvec3(1, 0, 0)));
+        const glm::dvec3 n2 = std::cos(t) * n1 + std::sin(t) * u;
+        for (int i = 0; i < 3; ++i) {
+            s.add(glm::dvec3(0.1 * i, 0.2, -0.1) + 0.05 * i * u, n1);
+            s.add(glm::dvec3(0.1 * i, 0.25, -0.1) - 0.04 * i * n1, n2);
+        }
+        shapes.push_back(s);
+    }
+    {  // a corner whose AtA has two equal diagonal entries and a nonzero entry between them
+        Weighted s{"a corner with equal diagonal entries", {}, {}, {}};
+        const glm::dvec3 c(0.2, -0.1, 0.3), n3(0.6, 0.6, std::sqrt(0.28));
+        s.add(c + glm::dvec3(0, 0.1, 0.2), {1, 0, 0});
+        s.add(c + glm::dvec3(0.1, 0, 0.2), {0, 1, 0});
+        s.add(c + 0.1 * glm::normalize(glm::cross(n3, glm::dvec3(1, -1, 0))), n3);
+        shapes.push_back(s);
+    }
+    {  // a corner whose AtA has two equal diagonal entries and an exact 0 between them
+        Weighted s{"a corner with equal diagonal entries and a zero between them", {}, {}, {}};
+        const glm::dvec3 c(-0.3, 0.2, 0.1);
+        s.add(c + glm::dvec3(0, 0.1, 0.1), {1, 0, 0});
+        s.add(c + glm::dvec3(0.1, 0, 0.1), {0, 1, 0});
+        s.add(c + glm::dvec3(0.1, 0.8 * 0.1, -0.6 * 0.1), {0, 0.6, 0.8});
+        s.add(c + glm::dvec3(0.8 * 0.1, 0.1, -0.6 * 0.1), {0.6, 0, 0.8});
+        shapes.push_back(s);
+    }
+    {  // weighted axis planes, eigenvalues 1, 0.5 and 0.007 (kept only if lambda_max were 0.5), slightly rotated
+        Weighted s{"weighted planes with eigenvalues 1, 0.5, 0.007", {}, {}, {}};
+        const glm::dvec3 e0 = glm::normalize(glm::dvec3(1, 0.08, -0.05)), e1 = glm::normalize(glm::cross(glm::dvec3(0, 0, 1), e0)),
+                         e2 = glm::cross(e0, e1);
+        s.add(glm::dvec3(0.1, 0.2, 0.3), e0, 1.0);
+        s.add(glm::dvec3(-0.2, 0.1, 0.0), e1, 0.5);
+        s.add(glm::dvec3(0.3, -0.1, 0.2), e2, 0.007);
+        shapes.push_back(s);
+    }
+    {  // one plane
+        Weighted s{"one plane", {}, {}, {}};
+        s.add(glm::dvec3(0.7, -0.4, 0.25), glm::dvec3(0.3, -0.4, 0.5));
+        shapes.push_back(s);
+    }
+    const int perms[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {1, 0, 2}, {0, 2, 1}, {2, 1, 0}};
+    const auto permute = [](const glm::dvec3& v, const int* pm) { return glm::dvec3(v[pm[0]], v[pm[1]], v[pm[2]]); };
+    int checked = 0, ranks[4] = {0, 0, 0, 0};
+    for (const Weighted& s : shapes)
+        for (const auto& pm : perms)
+            for (double tau : {0.01, 0.3, 0.6, 1.0, 1.5}) {
+                // the reference: Eigen on the same sums, the right-hand side about the mass point
+                Eigen::Matrix3d ata = Eigen::Matrix3d::Zero();
+                Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
+                glm::dvec3 m(0.0);
+                for (const glm::dvec3& p : s.p) m += permute(p, pm);
+                m /= double(s.p.size());
+                for (std::size_t i = 0; i < s.p.size(); ++i) {
+                    const glm::dvec3 n = permute(s.n[i], pm), p = permute(s.p[i], pm);
+                    const Eigen::Vector3d en(n.x, n.y, n.z);
+                    ata += s.w[i] * en * en.transpose();
+                    rhs += s.w[i] * en * glm::dot(n, p - m);
+                }
+                const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(ata);
+                const double lmax = es.eigenvalues().cwiseAbs().maxCoeff();
+                glm::dvec3 expected = m;
+                int expected_rank = 0;
+                for (int i = 0; i < 3; ++i) {
+                    const double l = es.eigenvalues()(i);
+                    // the test's data keep clear of the threshold, but for lambda_max itself at tau = 1 (kept: not below)
+                    REQUIRE((std::abs(l / lmax - tau) > 1e-3 || l == lmax));
+                    if (l < tau * lmax) continue;
+                    const Eigen::Vector3d e = es.eigenvectors().col(i);
+                    expected += (e.dot(rhs) / l) * glm::dvec3(e(0), e(1), e(2));
+                    ++expected_rank;
+                }
+                for (double scale : {1e-100, 1e-9, 1.0, 1e12}) {
+                    Qef q;
+                    for (std::size_t i = 0; i < s.p.size(); ++i) {
+                        const glm::dvec3 n = permute(s.n[i], pm), p = permute(s.p[i], pm);
+                        const double w = scale * s.w[i], d = glm::dot(n, p);
+                        const double nn[6] = {n.x * n.x, n.x * n.y, n.x * n.z, n.y * n.y, n.y * n.z, n.z * n.z};
+                        for (int k = 0; k < 6; ++k) q.ata[k] += w * nn[k];
+                        q.atb += w * d * n;
+                        q.btb += w * d * d;
+                        q.mass_sum += p;
+                        q.count += 1;
+                    }
+                    int rank = -1;
+                    const glm::dvec3 x = q.solve(tau, nullptr, &rank);
+                    INFO(s.name << ", axes permuted to (" << "xyz"[pm[0]] << "xyz"[pm[1]] << "xyz"[pm[2]]
+                                << "), all weights times " << scale << ", tau " << tau << ": solve gave " << str(x)
+                                << " rank " << rank << "; Eigen's truncated pseudo-inverse gives " << str(expected)
+                                << " rank " << expected_rank);
+                    CHECK(rank == expected_rank);
+                    CHECK(glm::length(x - expected) <= 1e-9);
+                    ++checked;
+                    ranks[expected_rank] += 1;
+                }
+            }
+    CHECK(checked == 9 * 6 * 5 * 4);
+    CHECK(ranks[0] >= 6 * 4 * 9);  // tau = 1.5 keeps nothing
+    CHECK(ranks[1] >= 6 * 4 * 3 + 6 * 4 * 9);  // tau = 1 keeps lambda_max only
+    CHECK(ranks[2] >= 6 * 4);
+    CHECK(ranks[3] >= 6 * 4);
+}
+
 TEST_CASE("qef: error(x) equals the brute-force sum of squares; accumulated in double" * geolab::points(1) *
           geolab::hint("Q(x) = xT AtA x - 2 xT Atb + btb with every sum in double (float loses everything here: "
                        "the points are near 1e4 while Q is of order 1). Handout §2.1.")) {
