@@ -10,14 +10,9 @@
 // it ("peak_MiB", the same child). The summary prints wall and CPU medians, faults and peak for both sides, the
 // ratios, and the load average before and after the run (the machine is shared: quote CPU ratios from busy runs).
 #include <benchmark/benchmark.h>
-#include <malloc.h>
-#include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <map>
 #include <string>
 #include <vector>

@@ -10,10 +10,6 @@
 // The build reports its minor page faults per iteration ("faults") and the peak memory it adds above what the
 // process held before it ("peak_MiB", measured once in a forked child), as bench/01_halfedge does.
 #include <benchmark/benchmark.h>
-#include <malloc.h>
-#include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cstdio>

@@ -16,7 +16,6 @@
 #include <memory>
 #include <string>
 
-#include <sys/resource.h>
 
 #include <benchmark/benchmark.h>
 #include <glm/geometric.hpp>

@@ -6,15 +6,10 @@
 // its arrays, lib memory.hpp) and with transparent huge pages switched off for the process (4 KiB pages: one page
 // fault per 4 KiB of the ~360 MB mesh), so the page faults' cost shows side by side.
 #include <benchmark/benchmark.h>
-#include <malloc.h>
 #include <sys/prctl.h>
-#include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <map>
 #include <string>
 

@@ -19,7 +19,6 @@
 // solid ≤ 0.1 × OpenVDB; the file-backed 2048³ run below 1 GiB of memory.
 #include <benchmark/benchmark.h>
 #include <malloc.h>
-#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 

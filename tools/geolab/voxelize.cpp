@@ -38,6 +38,7 @@ void add_voxelize(CLI::App& app, int& status);
 
 #ifdef GEOLAB_HAS_LAB_08
 namespace {
+namespace vx = geolab::voxels;
 struct VoxelizeOpts {
     std::string mesh, method = "cpu", out;
     std::int64_t res = 128, slab_layers = 32;
@@ -118,7 +119,6 @@ struct Stage {
 // Writes `voxels` to --out (.raw or .binvox, by its extension) and reports the file's size.
 void write_grid(const VoxelizeOpts& o, const voxels::BitGrid& voxels, const voxels::Grid& grid, Stage& st,
                 nlohmann::json& report) {
-    namespace vx = geolab::voxels;
     if (is_raw(o.out)) {
         vx::write_raw(o.out, voxels);
     } else {
@@ -157,7 +157,6 @@ double distance_to_triangle(const glm::dvec3& p, const glm::dvec3& a, const glm:
 // GL's solid voxelization (always solid), the CPU's for comparison when asked, then --out and --json.
 int run_gl(const VoxelizeOpts& o, const PolygonSoup& u, const voxels::Grid& grid, Stage& st,
            nlohmann::json& report) {
-    namespace vx = geolab::voxels;
     const char* axis_name[3] = {"x", "y", "z"};
     const vx::BitGrid gl = vx::voxelize_gl(u, grid.dims, o.axis);
     const std::uint64_t gl_voxels = vx::count_set(gl);
@@ -215,7 +214,6 @@ int run_gl(const VoxelizeOpts& o, const PolygonSoup& u, const voxels::Grid& grid
 }
 
 int run_voxelize(const VoxelizeOpts& o) {
-    namespace vx = geolab::voxels;
     if (o.compare && o.method != "gl") throw std::runtime_error("--compare compares the gl method with the cpu: add --method gl");
     if (o.method == "gl" && o.out_of_core) throw std::invalid_argument("--out-of-core is the cpu method's");
     if (!o.out.empty()) (void)is_raw(o.out);  // a bad extension is refused before the work

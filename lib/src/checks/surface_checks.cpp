@@ -2,8 +2,6 @@
 #include "geolab/surface_checks.hpp"
 
 #include <algorithm>
-
-#include <glm/geometric.hpp>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -15,6 +13,7 @@
 #include <vector>
 
 #include <glm/common.hpp>
+#include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 
 #include "geolab/predicates.hpp"

@@ -429,16 +429,13 @@ MutateReport run_mutate(const MutateOptions& opt) {
     }
     std::vector<SourceFile> files;
     int next_id = 0;
+    // the mutants this run considers: array bounds only when asked for (see Mutant::array_bound)
+    auto considered = [&](const Mutant& m) { return !m.array_bound || opt.array_bounds; };
     for (std::size_t f = 0; f < names.size(); ++f) {
         files.emplace_back("src/" + names[f], texts[f], vocab, next_id);
         next_id += static_cast<int>(files.back().mutants().size());
-        for (const auto& m : files.back().mutants()) {
-            if (m.array_bound && !opt.array_bounds) ++rep.array_bound_mutants;
-            else ++rep.total_mutants;
-        }
+        for (const auto& m : files.back().mutants()) ++(considered(m) ? rep.total_mutants : rep.array_bound_mutants);
     }
-    // the mutants this run considers: array bounds only when asked for (see Mutant::array_bound)
-    auto considered = [&](const Mutant& m) { return !m.array_bound || opt.array_bounds; };
     std::vector<Mutant> chosen;
     {
         // --only FILE[:LINE[-LAST]][,...]

@@ -171,7 +171,7 @@ struct MutantResult {
 struct MutateReport {
     std::string lab;
     std::size_t sites = 0, total_mutants = 0;  //!< in the solution blocks (before sampling)
-    std::size_t array_bound_mutants = 0;       //!< of total_mutants: array bounds, left out without --array-bounds
+    std::size_t array_bound_mutants = 0;       //!< array bounds left out (without --array-bounds), beside total_mutants
     std::vector<MutantResult> results;         //!< sampled mutants, by id
     std::vector<std::string> stale_equivalents;   //!< listed in equivalent-mutants.txt, matching no mutant
     std::vector<std::string> killed_equivalents;  //!< listed as equivalent, yet killed by the tests
