@@ -48,6 +48,40 @@ inline std::string str(const glm::dvec3& p) {
     return os.str();
 }
 
+// The QEF of vertex vi: tree.qefs[vi], which place_vertices and simplify keep beside tree.vertices. A tree whose
+// arrays differ in length fails the test here (with the reason), not with an out-of-range read.
+inline const Qef& qef_of(const Octree& t, std::uint32_t vi) {
+    static const Qef none;
+    if (t.qefs.size() != t.vertices.size() || vi >= t.qefs.size()) {
+        FAIL_CHECK("tree.qefs must hold one QEF per dual vertex (tree.qefs[i] is the QEF of tree.vertices[i]): "
+                   << t.qefs.size() << " QEFs for " << t.vertices.size() << " vertices, vertex " << vi);
+        return none;
+    }
+    return t.qefs[vi];
+}
+
+// Whether two soups are the same to the bit: positions, indices and offsets, in the same order.
+inline bool same_soup(const PolygonSoup& a, const PolygonSoup& b) {
+    return a.positions == b.positions && a.indices == b.indices && a.offsets == b.offsets;
+}
+// Where two soups first differ, for a failure message.
+inline std::string soup_difference(const PolygonSoup& a, const PolygonSoup& b) {
+    std::ostringstream os;
+    os << a.n_vertices() << " vs " << b.n_vertices() << " positions, " << a.n_faces() << " vs " << b.n_faces()
+       << " faces";
+    for (std::size_t i = 0; i < std::min(a.positions.size(), b.positions.size()); ++i)
+        if (a.positions[i] != b.positions[i]) {
+            os << "; position " << i << ": " << str(a.positions[i]) << " vs " << str(b.positions[i]);
+            return os.str();
+        }
+    for (std::size_t i = 0; i < std::min(a.indices.size(), b.indices.size()); ++i)
+        if (a.indices[i] != b.indices[i]) {
+            os << "; index " << i << ": " << a.indices[i] << " vs " << b.indices[i];
+            return os.str();
+        }
+    return os.str();
+}
+
 // ---- independent mesh checks ---------------------------------------------------------------------------------
 
 // Undirected edges of a soup with how often each is traversed in each direction (lo→hi, hi→lo).
@@ -735,6 +769,7 @@ inline Octree given_octree(const ScalarField& f, int level, double padding = 0.0
 // so no sharp corners). contour must work with any vertex inside its cell.
 inline void given_vertices(Octree& t) {
     t.vertices.clear();
+    t.qefs.clear();
     for (std::uint32_t li : t.leaves()) {
         OctreeNode& nd = t.nodes[li];
         nd.vertex = invalid_index;
@@ -764,7 +799,8 @@ inline void given_vertices(Octree& t) {
                                                                t.lattice_point(t.corner(nd, c)));
                 ++n;
             }
-            t.vertices.push_back(DualVertex{sum / double(n), Qef{}, pieces.edges[k], std::uint8_t(pieces.count)});
+            t.vertices.push_back(DualVertex{sum / double(n), pieces.edges[k], std::uint8_t(pieces.count)});
+            t.qefs.push_back(Qef{});  // contour reads no QEF
         }
     }
 }
@@ -834,7 +870,8 @@ inline std::size_t given_collapse(Octree& t, int min_level) {
         parent.vertex = invalid_index;
         if (n > 0) {
             parent.vertex = std::uint32_t(t.vertices.size());
-            t.vertices.push_back(DualVertex{sum / double(n), Qef{}});
+            t.vertices.push_back(DualVertex{sum / double(n)});
+            t.qefs.push_back(Qef{});
         }
         ++collapses;
     }

@@ -91,8 +91,8 @@ inline std::size_t wrong_layouts(const Octree& t, std::ostringstream& first, boo
                 else if (v.edges != want.edges[k])
                     why << "vertex " << k << " has edges 0x" << std::hex << v.edges << ", piece " << std::dec << k
                         << " of cell_surface crosses 0x" << std::hex << want.edges[k] << std::dec;
-                else if (qef_counts && v.qef.count != distinct_crossings(t, nd, want.edges[k]))
-                    why << "vertex " << k << " has " << v.qef.count << " QEF planes for "
+                else if (qef_counts && qef_of(t, nd.vertex + k).count != distinct_crossings(t, nd, want.edges[k]))
+                    why << "vertex " << k << " has " << qef_of(t, nd.vertex + k).count << " QEF planes for "
                         << distinct_crossings(t, nd, want.edges[k]) << " crossed edges";
             }
         }

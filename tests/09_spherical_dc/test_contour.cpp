@@ -52,13 +52,13 @@ TEST_CASE("place_vertices: a vertex in exactly the leaves whose corners change s
             bool ok = should == has;
             if (ok && has) {
                 REQUIRE(nd.vertex < t.vertices.size());
-                ok = t.vertices[nd.vertex].qef.count == sign_changing_edges(t, nd);
+                ok = qef_of(t, nd.vertex).count == sign_changing_edges(t, nd);
             }
             if (!ok && wrong++ < 3)
                 first << "\n  leaf (" << nd.x << ", " << nd.y << ", " << nd.z << ") level " << int(nd.level) << ": "
                       << in << " inside corners (f <= 0), " << sign_changing_edges(t, nd)
                       << " sign-changing edges, vertex " << (has ? "yes" : "no")
-                      << (has ? ", qef.count " + std::to_string(t.vertices[nd.vertex].qef.count) : std::string());
+                      << (has ? ", qef.count " + std::to_string(qef_of(t, nd.vertex).count) : std::string());
         }
         CHECK_MESSAGE(wrong == 0, wrong << " leaves have a wrong vertex / QEF" << first.str());
         std::ostringstream first_signs;
@@ -152,9 +152,9 @@ TEST_CASE("place_vertices: a QEF minimiser that leaves its cell gives way to the
         ++n;
         const Box b = cell_box(t, nd);
         const DualVertex& v = t.vertices[nd.vertex];
-        const glm::dvec3 x = v.qef.solve(0.01);
+        const glm::dvec3 x = qef_of(t, nd.vertex).solve(0.01);
         const double out = box_outside(b, v.position);
-        if (box_outside(b, x) > 1e-9 * h) ++solved_outside, not_mass += glm::length(v.position - v.qef.mass_point()) > 1e-9 * h;
+        if (box_outside(b, x) > 1e-9 * h) ++solved_outside, not_mass += glm::length(v.position - qef_of(t, nd.vertex).mass_point()) > 1e-9 * h;
         else if (glm::length(v.position - x) > 1e-9 * h) ++moved;
         if (out > 1e-9 * h && outside++ < 3)
             first << "\n  cell [" << str(b.lo) << ", " << str(b.hi) << "] has its vertex at " << str(v.position);
@@ -321,7 +321,7 @@ TEST_CASE("simplify: tolerance 0 merges only exact fits; a box with faces on coa
             REQUIRE(nd.vertex < t.vertices.size());
             // Q(x) of the merged QEF, from its sums (x^T AtA x - 2 x^T Atb + btb)
             const DualVertex& v = t.vertices[nd.vertex];
-            const Qef& q = v.qef;
+            const Qef& q = qef_of(t, nd.vertex);
             const glm::dvec3 x = v.position;
             const double xax = q.ata[0] * x.x * x.x + q.ata[3] * x.y * x.y + q.ata[5] * x.z * x.z +
                                2 * (q.ata[1] * x.x * x.y + q.ata[2] * x.x * x.z + q.ata[4] * x.y * x.z);
@@ -361,6 +361,32 @@ TEST_CASE("simplify: tolerance 0 merges only exact fits; a box with faces on coa
         }
         const glm::dvec3 e = f.hi_ - f.lo_;
         CHECK(std::abs(enclosed_volume(s) - e.x * e.y * e.z) < 1e-6 * e.x * e.y * e.z);
+    }
+}
+
+TEST_CASE("simplify: tree.qefs must hold one QEF per vertex; if not std::invalid_argument and nothing changes" *
+          geolab::points(1) * geolab::builds_on("Task 1, Task 2") *
+          geolab::hint("simplify merges the children's QEFs from tree.qefs (tree.qefs[i] is the QEF of "
+                       "tree.vertices[i], which place_vertices fills side by side). A tree whose two arrays differ "
+                       "in length is a caller's mistake: throw std::invalid_argument before changing anything, "
+                       "rather than reading past the end. Handout §5.2.")) {
+    const FieldPtr f = geolab::box({0.03, -0.02, 0.01}, {0.61, 0.47, 0.33});  // collapses when the QEFs are there
+    for (int defect = 0; defect < 3; ++defect) {
+        Octree t = tree_with_vertices(*f, 4);
+        REQUIRE(t.qefs.size() == t.vertices.size());
+        const char* what[] = {"no QEF at all (tree.qefs empty)", "one QEF missing", "one QEF too many"};
+        if (defect == 0) t.qefs.clear();
+        else if (defect == 1) t.qefs.pop_back();
+        else t.qefs.push_back(Qef{});
+        const std::vector<OctreeNode> nodes = t.nodes;
+        const std::size_t vertices = t.vertices.size(), qefs = t.qefs.size();
+        INFO("box level 4, " << what[defect] << ": " << qefs << " QEFs for " << vertices << " vertices");
+        CHECK_THROWS_AS(simplify(t, 1e-6, 0.01), std::invalid_argument);
+        bool unchanged = t.vertices.size() == vertices && t.qefs.size() == qefs && t.nodes.size() == nodes.size();
+        for (std::size_t i = 0; unchanged && i < nodes.size(); ++i)
+            unchanged = t.nodes[i].first_child == nodes[i].first_child && t.nodes[i].vertex == nodes[i].vertex &&
+                        t.nodes[i].signs == nodes[i].signs;
+        CHECK_MESSAGE(unchanged, "the tree changed although simplify threw");
     }
 }
 
@@ -471,8 +497,8 @@ TEST_CASE("simplify: the sign tests decide each of the 256 corner configurations
                 if (signs == 0 || signs == 0xff) continue;
                 ch.vertex = std::uint32_t(t.vertices.size());
                 t.vertices.push_back({centre + glm::dvec3(child & 1 ? 0.5 : -0.5, child & 2 ? 0.5 : -0.5,
-                                                          child & 4 ? 0.5 : -0.5),
-                                      axis_planes(centre)});
+                                                          child & 4 ? 0.5 : -0.5)});
+                t.qefs.push_back(axis_planes(centre));
                 ++vertices;
             }
             // what Ju et al.'s tests decide, computed here
@@ -490,7 +516,7 @@ TEST_CASE("simplify: the sign tests decide each of the 256 corner configurations
             if (ok && collapse) {
                 ok = root.signs == m && (root.vertex == invalid_index) == (vertices == 0);
                 if (ok && vertices > 0) {
-                    ok = root.vertex < t.vertices.size() && t.vertices[root.vertex].qef.count == 3 * vertices &&
+                    ok = root.vertex < t.vertices.size() && qef_of(t, root.vertex).count == 3 * vertices &&
                          glm::length(t.vertices[root.vertex].position - centre) < 1e-12;
                 }
             }
@@ -524,7 +550,8 @@ TEST_CASE("simplify: the sign tests decide each of the 256 corner configurations
         const std::uint32_t first_child = t.split(0);
         t.nodes[first_child].signs = 1;  // corner 0 of child 0 (the parent's corner 0) inside
         t.nodes[first_child].vertex = 0;
-        t.vertices.push_back({lo + glm::dvec3(0.5), axis_planes(target)});
+        t.vertices.push_back({lo + glm::dvec3(0.5)});
+        t.qefs.push_back(axis_planes(target));
         const bool in_cell = box_outside(Box{lo, lo + glm::dvec3(2.0)}, target) == 0.0;
         const std::size_t collapses = simplify(t, 1e-6, 0.01);
         INFO("corner 0 inside; the merged QEF's minimiser " << str(target) << " is "
@@ -552,7 +579,8 @@ TEST_CASE("simplify: the sign tests decide each of the 256 corner configurations
                 q.mass_sum = centre;
                 q.count = 1;
             }
-            t.vertices.push_back({lo + glm::dvec3(0.5), q});
+            t.vertices.push_back({lo + glm::dvec3(0.5)});
+            t.qefs.push_back(q);
         }
         const std::size_t collapses = simplify(t, 1e-6, 0.01);
         const char* what[] = {"one plane through the centre (count 1)", "an empty QEF (count 0)", "no vertex"};

@@ -169,8 +169,8 @@ TEST_CASE("place_vertices: a leaf coarser than the finest level gets one vertex 
             if (nd.level == cs.t.max_level || nd.vertex >= cs.t.vertices.size()) continue;
             const DualVertex& v = cs.t.vertices[nd.vertex];
             const Box box = cell_box(cs.t, nd);
-            const glm::dvec3 x = v.qef.solve(0.01);
-            const glm::dvec3 want = box_outside(box, x) == 0.0 ? x : glm::clamp(v.qef.mass_point(), box.lo, box.hi);
+            const glm::dvec3 x = qef_of(cs.t, nd.vertex).solve(0.01);
+            const glm::dvec3 want = box_outside(box, x) == 0.0 ? x : glm::clamp(qef_of(cs.t, nd.vertex).mass_point(), box.lo, box.hi);
             ++checked;
             if (glm::length(v.position - want) > 1e-9 * cs.t.size && wrong_position++ < 3)
                 where << "\n  leaf (" << nd.x << ", " << nd.y << ", " << nd.z << ") level " << int(nd.level) << ": vertex "

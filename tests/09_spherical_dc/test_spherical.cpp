@@ -263,12 +263,12 @@ TEST_CASE("place_vertices (spherical): each vertex lies in its cell in (r theta 
                 if (std::hypot(x.x - origin.x, x.y - origin.y) > 1e-12) d = std::max(d, phi_outside(s.phi, b.p0, b.p1 - b.p0));
                 return d;
             };
-            const glm::dvec3 v = t.vertices[nd.vertex].position, x = t.vertices[nd.vertex].qef.solve(0.01);
+            const glm::dvec3 v = t.vertices[nd.vertex].position, x = qef_of(t, nd.vertex).solve(0.01);
             if (out_of(x) > eps) {
                 ++solved_outside;
                 // the expected vertex: the mass point, r and theta clamped to their intervals, phi to the nearer end of
                 // the cell's arc
-                Sph s = sph_of(t.vertices[nd.vertex].qef.mass_point() - origin);
+                Sph s = sph_of(qef_of(t, nd.vertex).mass_point() - origin);
                 s.r = std::clamp(s.r, b.r0, b.r1);
                 s.theta = std::clamp(s.theta, b.t0, b.t1);
                 const double w = b.p1 - b.p0, d = std::fmod(s.phi - b.p0 + 4 * kPi, 2 * kPi);
@@ -352,7 +352,7 @@ TEST_CASE("place_vertices (spherical): each QEF holds its own cell's crossings; 
                         ++count;
                     }
                 ++checked;
-                const Qef& qef = t.vertices[nd.vertex].qef;
+                const Qef& qef = qef_of(t, nd.vertex);
                 const double err = count == qef.count ? glm::length(qef.mass_point() - sum / double(count)) : 1e300;
                 if (err > 1e-5 * unit && bad++ < 3)
                     first << "\n  leaf (" << nd.x << ", " << nd.y << ", " << nd.z << "): qef.count " << qef.count

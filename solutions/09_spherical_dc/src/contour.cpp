@@ -181,21 +181,16 @@ constexpr SimplifyTables make_simplify_tables() {
 }
 constexpr SimplifyTables simplify_tables = make_simplify_tables();
 // The 3×3×3 sub-lattice of a parent cell (its 8 children's corners) as bit sets, bit p = i + 3j + 9k. edge_starts[a]:
-// the points from which an edge along axis a leaves (coordinate a is 0 or 1); interior_edges[a]: those whose edge
-// lies inside the parent (the other two coordinates are 1), shared by no other parent.
+// the points from which an edge along axis a leaves (coordinate a is 0 or 1).
 constexpr std::uint32_t all_sub_points = (1u << 27) - 1;
-constexpr std::array<std::uint32_t, 3> sub_lattice_sets(bool interior) {
+constexpr std::array<std::uint32_t, 3> make_edge_starts() {
     std::array<std::uint32_t, 3> out{};
     for (int a = 0; a < 3; ++a)
-        for (int p = 0; p < 27; ++p) {
-            const int* ijk = sub_offsets.ijk[p];
-            if (ijk[a] == 2) continue;
-            if (interior && (ijk[(a + 1) % 3] != 1 || ijk[(a + 2) % 3] != 1)) continue;
-            out[a] |= 1u << p;
-        }
+        for (int p = 0; p < 27; ++p)
+            if (sub_offsets.ijk[p][a] != 2) out[a] |= 1u << p;
     return out;
 }
-constexpr std::array<std::uint32_t, 3> edge_starts = sub_lattice_sets(false), interior_edges = sub_lattice_sets(true);
+constexpr std::array<std::uint32_t, 3> edge_starts = make_edge_starts();
 // Speed (contour): the edges of a group's sub-lattice, group_edges[a][p] for the edge from point p along axis a. The
 // cell in quadrant k is the group's child child[k] (0..7) or, when child[k] < 0, the finest cell at offset d[k] from
 // the group's child-0 cell, in a neighbouring group; edge[k] is the index in cell_edges of the edge as an edge of that
@@ -238,35 +233,172 @@ bool has_finest_children(const Octree& tree, const OctreeNode& nd) {
         if (!tree.nodes[nd.first_child + c].is_leaf()) return false;
     return true;
 }
-}  // namespace
-// END SOLUTION
+// The crossings of finest edges that several groups of finest leaves need (place_vertices), by edge, with how many
+// groups will still ask for each: an open-addressing hash (linear probing, backward-shift deletion). Memory: the last
+// group to ask removes the entry, and its crossing's room is reused, so what stays is the edges between the groups
+// done and the groups to come (a front sweeping the octree), not every crossing of the surface.
+class SharedCrossings {
+public:
+    struct Entry {
+        std::uint64_t key = 0;  // 0: an empty place
+        std::uint32_t slot = invalid_index;  // the crossing's index in the pool
+        std::uint32_t uses = 0;  // groups still to ask; 0: kept to the end
+    };
+    //! The entry of `key` (≠ 0), made with `uses` if absent. Valid until the next call.
+    Entry& find_or_add(std::uint64_t key, std::uint32_t uses) {
+        if (2 * (size_ + 1) > table_.size()) grow();
+        std::size_t i = home(key);
+        while (table_[i].key != 0 && table_[i].key != key) i = (i + 1) & mask_;
+        if (table_[i].key == 0) {
+            table_[i] = {key, invalid_index, uses};
+            ++size_;
+        }
+        return table_[i];
+    }
+    //! Remove entry e (a reference find_or_add returned): the entries after it in its probe run move back over the
+    //! hole where their home place allows, so no search stops early at it.
+    void erase(Entry& e) {
+        std::size_t i = std::size_t(&e - table_.data());
+        for (std::size_t j = (i + 1) & mask_; table_[j].key != 0; j = (j + 1) & mask_) {
+            const std::size_t h = home(table_[j].key);
+            if (((j - h) & mask_) >= ((j - i) & mask_)) {  // h is not in (i, j]: entry j may fill the hole
+                table_[i] = table_[j];
+                i = j;
+            }
+        }
+        table_[i] = Entry{};
+        --size_;
+    }
 
-std::size_t place_vertices(Octree& tree, const VertexParams& params) {
-    // BEGIN SOLUTION
+private:
+    std::size_t home(std::uint64_t key) const { return std::size_t((key * 0x9E3779B97F4A7C15ull) >> shift_); }
+    void grow() {
+        std::vector<Entry> old = std::move(table_);
+        const std::size_t cap = old.empty() ? 1024 : 2 * old.size();
+        table_.assign(cap, Entry{});
+        mask_ = cap - 1;
+        shift_ = 64 - std::countr_zero(cap);
+        for (const Entry& e : old) {
+            if (e.key == 0) continue;
+            std::size_t i = home(e.key);
+            while (table_[i].key != 0) i = (i + 1) & mask_;
+            table_[i] = e;
+        }
+    }
+    std::vector<Entry> table_;
+    std::size_t size_ = 0, mask_ = 0;
+    int shift_ = 64;
+};
+// Ju et al.'s collapse test (simplify's conditions (0)-(3)) of node nd, whose 8 children are leaves with their signs
+// recorded. child_qef(c, v) is the QEF of child c's vertex v; it is asked for only once the sign tests have passed.
+// Room for a Qef, left uninitialised. Speed: the fused traversal below keeps 8 per node on its stack and fills only
+// those a collapse may read; zeroing them all (900 bytes a node) cost more than the collapses themselves.
+union QefSlot {
+    QefSlot() {}
+    Qef qef;
+};
+struct Collapse {
+    bool ok = false;          // collapse nd into a leaf
+    std::uint8_t signs = 0;   // the new leaf's corner signs
+    bool has_vertex = false;  // it gets one vertex (no surface crosses it otherwise)
+    DualVertex vertex;
+    QefSlot merged;           // ok: the children's QEFs merged (the vertex's QEF when it has one)
+};
+template <class ChildQef>
+Collapse collapse_test(const Octree& tree, const OctreeNode& nd, double tolerance, double tau, ChildQef&& child_qef) {
+    Collapse r;
+    const std::int32_t s = tree.cell_span(nd.level);
+    const glm::ivec3 base = tree.corner(nd, 0);
+    // the signs at the 27 sub-lattice points (bit i + 3j + 9k): the children's corners, which place_vertices
+    // recorded in their sign configurations. (0) Every child's own corners form one sheet: one piece, no
+    // ambiguous face (else the merged vertex would join pieces, or a face of the parent would be crossed twice)
+    std::uint32_t sub = 0;
+    bool children_single = true;
+    for (int child = 0; child < 8; ++child) {
+        const std::uint8_t signs = tree.nodes[nd.first_child + child].signs;
+        sub |= simplify_tables.spread[child][signs];
+        children_single = children_single && simplify_tables.single_sheet[signs];
+    }
+    if (!children_single) return r;
+    // (1) the parent's corner signs form one sheet
+    int in_mask = 0;
+    for (int c = 0; c < 8; ++c) in_mask |= int((sub >> simplify_tables.point[c][c]) & 1u) << c;
+    if (!simplify_tables.single_sheet[in_mask]) return r;
+    // (2) every sub-lattice point that is the centre of an edge, face or the cell agrees with one of that
+    //     feature's corners
+    if ((sub & ~simplify_tables.may_be_inside[in_mask]) ||
+        (~sub & all_sub_points & ~simplify_tables.may_be_outside[in_mask]))
+        return r;
+    // (3) the merged QEF fits well and its minimiser lies in the cell
+    Qef& merged = r.merged.qef = Qef{};
+    for (int c = 0; c < 8; ++c) {
+        const std::uint32_t vi = tree.nodes[nd.first_child + c].vertex;
+        if (vi != invalid_index) merged.merge(child_qef(c, vi));
+    }
+    if (merged.count > 0) {
+        if (in_mask == 0 || in_mask == 0xff) return r;  // a surface the coarse corners cannot see
+        const glm::dvec3 x = merged.solve(tau);
+        const glm::dvec3 lo = tree.lattice_point(base), hi = tree.lattice_point(base + glm::ivec3(s));
+        const double slack = 1e-9 * tree.size;
+        if (glm::any(glm::lessThan(x, lo - slack)) || glm::any(glm::greaterThan(x, hi + slack))) return r;
+        if (std::sqrt(std::max(0.0, merged.error(x)) / merged.count) > tolerance) return r;
+        std::uint16_t edges = 0;  // the parent's sign-changing cell edges
+        for (int e = 0; e < 12; ++e)
+            edges |= std::uint16_t((((in_mask >> cell_edge_corners[e][0]) ^ (in_mask >> cell_edge_corners[e][1])) & 1) << e);
+        r.has_vertex = true;
+        r.vertex = {glm::clamp(x, lo, hi), edges, 1};
+    } else if (in_mask != 0 && in_mask != 0xff) {
+        return r;  // sign changes without crossings: leave it alone
+    }
+    r.ok = true;
+    r.signs = std::uint8_t(in_mask);
+    return r;
+}
+// place_vertices, keeping the QEFs in *qefs when not null (beside tree.vertices), and with `fused` (Cartesian
+// trees) simplifying on the way: the one-shot function's path, which needs no QEF per vertex (memory).
+struct FusedSimplify {
+    double tolerance = 0.0, tau = 0.01;  // simplify's arguments
+    std::size_t collapses = 0;
+};
+std::size_t place_vertices_impl(Octree& tree, const VertexParams& params, std::vector<Qef>* qefs,
+                                FusedSimplify* fused) {
     tree.vertices.clear();
+    tree.qefs.clear();
     const bool spherical = tree.coordinates == Coordinates::spherical;
     const std::int32_t n_res = tree.resolution();
     std::size_t crossings = 0;
-    // finest edges are shared by 4 leaves: compute each crossing once. An edge is filed under its lower end (3 slots:
-    // the edges along +x, +y, +z), as canonical() names it. Spherical trees: canonical() merges the lattice points
-    // on the polar axis (all φ) and, when r_min = 0, at the origin, so the θ-edges leaving a pole or the radial edges
-    // leaving the origin would share one slot; an edge whose lower end is such a point is filed under its upper end
-    // in a second grid instead (the radial edges on the axis, one edge for all φ, then still share theirs).
-    using EdgeSlots = std::array<std::uint32_t, 3>;
-    const EdgeSlots no_edges{invalid_index, invalid_index, invalid_index};
-    BlockGrid<EdgeSlots> edge_crossing(no_edges, n_res + 1), edge_crossing_into(no_edges, n_res + 1);
+    // Finest edges are shared by the 4 leaves around them: compute each crossing once. An edge is filed under its
+    // lower end and axis, as canonical() names the end. Spherical trees: canonical() merges the lattice points on the
+    // polar axis (all φ) and, when r_min = 0, at the origin, so the θ-edges leaving a pole or the radial edges leaving
+    // the origin would share one entry; an edge whose lower end is such a point is filed under its upper end instead
+    // (the radial edges on the axis, one edge for all φ, then still share theirs). Crossings live in a pool whose
+    // rooms are reused once no group needs them (SharedCrossings).
     auto merged_point = [&](glm::ivec3 q) {
         return spherical && (q.y == 0 || q.y == n_res || (q.x == 0 && tree.r_min == 0.0));
     };
-    std::vector<Crossing> computed;  // the crossings of finest edges, by the index the grids hold
+    SharedCrossings shared;
+    std::vector<Crossing> computed;  // the pool of crossings
+    std::vector<std::uint32_t> free_rooms;  // rooms of `computed` to reuse
+    auto keep = [&](const Crossing& x) {
+        if (free_rooms.empty()) {
+            computed.push_back(x);
+            return std::uint32_t(computed.size() - 1);
+        }
+        const std::uint32_t room = free_rooms.back();
+        free_rooms.pop_back();
+        computed[room] = x;
+        return room;
+    };
     const std::array<CellSurface, 256>& surfaces = plain_surfaces();
     // Speed: in the conservative band about half the leaves are cut by the surface, each with about one new crossing;
     // reserving that much avoids most copies of these large arrays while they grow (7 of 8 nodes are leaves).
     const std::size_t leaves_estimate = tree.nodes.size() - tree.nodes.size() / 8;
     tree.vertices.reserve(leaves_estimate / 2);
-    computed.reserve(leaves_estimate / 2);
-    prefer_huge_pages(tree.vertices);  // Speed: 2 MiB pages for the two largest arrays (lib memory.hpp)
-    prefer_huge_pages(computed);
+    prefer_huge_pages(tree.vertices);  // Speed: 2 MiB pages for the largest arrays (lib memory.hpp)
+    if (qefs) {
+        qefs->reserve(leaves_estimate / 2);
+        prefer_huge_pages(*qefs);
+    }
     // Speed: the lambdas below take lattice points by reference: passed by value, a glm::ivec3 travels in two 64-bit
     // registers that the compiler assembled from 32-bit stores to memory, a store-forwarding stall per call
     // the crossing on the edge from lattice point qc (value vc) to qd = qc + e_a (value vd)
@@ -277,15 +409,39 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params) {
                          : find_crossing(*tree.field, tree.lattice_point(qc), tree.lattice_point(qd), vc, vd,
                                          params.crossing_tolerance);
     };
-    // the same for a finest edge, computed once: its index in `computed`
-    auto finest_crossing = [&](const glm::ivec3& qc, const glm::ivec3& qd, int a, double vc, double vd) {
-        std::uint32_t& slot = merged_point(qc) ? edge_crossing_into.slot(tree.canonical(qd))[a]
-                                               : edge_crossing.slot(tree.canonical(qc))[a];
-        if (slot == invalid_index) {
-            slot = std::uint32_t(computed.size());
-            computed.push_back(compute(qc, qd, vc, vd));
+    // The groups of finest leaves that need the crossing of the finest edge from qc along axis a: the parents of
+    // level L − 1 around it. One along a; along each other axis b one when qc_b is odd (the edge runs through the
+    // parent), else the two on either side, less those outside the domain. Spherical trees: 1 for an edge inside its
+    // parent, else 0 (the φ seam and the poles join parents irregularly: those crossings are kept to the end).
+    auto groups_sharing = [&](const glm::ivec3& qc, int a) {
+        const int b = (a + 1) % 3, c = (a + 2) % 3;
+        if ((qc[b] & 1) && (qc[c] & 1)) return 1u;
+        if (spherical) return 0u;
+        auto around = [&](int k) { return qc[k] & 1 ? 1u : std::uint32_t(qc[k] > 0) + std::uint32_t(qc[k] < n_res); };
+        return around(b) * around(c);
+    };
+    // the crossing of a finest edge, computed once: its room in `computed`; `done` collects the rooms this group is
+    // the last to need
+    auto finest_crossing = [&](const glm::ivec3& qc, const glm::ivec3& qd, int a, double vc, double vd,
+                               std::uint32_t* done, int& n_done) {
+        const std::uint32_t uses = groups_sharing(qc, a);
+        if (uses == 1) {  // this group's alone (inside its parent, or on the domain's boundary)
+            const std::uint32_t room = keep(compute(qc, qd, vc, vd));
+            done[n_done++] = room;
+            return room;
         }
-        return slot;
+        const bool upper = merged_point(qc);
+        const glm::ivec3 q = tree.canonical(upper ? qd : qc);
+        const std::uint64_t key = ((((std::uint64_t(q.x) << 11 | std::uint64_t(q.y)) << 11 | std::uint64_t(q.z)) << 2 |
+                                    std::uint64_t(a)) << 1 | std::uint64_t(upper)) + 1;
+        SharedCrossings::Entry& e = shared.find_or_add(key, uses);
+        if (e.slot == invalid_index) e.slot = keep(compute(qc, qd, vc, vd));
+        const std::uint32_t room = e.slot;
+        if (e.uses != 0 && --e.uses == 0) {
+            shared.erase(e);
+            done[n_done++] = room;
+        }
+        return room;
     };
     // The vertex of a piece in the cell with corners q0 (lowest) and q7 (highest): the QEF's minimiser when it lies in
     // the cell, else the mass point (the mean of the piece's crossings), clamped into the cell. Clamping the minimiser
@@ -318,8 +474,10 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params) {
     auto add_vertices = [&](std::uint32_t li, const Qef* qef, const std::uint16_t* edges, int pieces,
                             const glm::ivec3& q0, const glm::ivec3& q7) {
         tree.nodes[li].vertex = std::uint32_t(tree.vertices.size());
-        for (int k = 0; k < pieces; ++k)
-            tree.vertices.push_back({cell_vertex(qef[k], q0, q7), qef[k], edges[k], std::uint8_t(pieces)});
+        for (int k = 0; k < pieces; ++k) {
+            tree.vertices.push_back({cell_vertex(qef[k], q0, q7), edges[k], std::uint8_t(pieces)});
+            if (qefs) qefs->push_back(qef[k]);
+        }
     };
     // the radial edge on the polar axis appears twice in a cell there (φ-lower and φ-upper corners): count it once
     auto repeated_axis_edge = [&](const CellEdge& e, glm::ivec3 qc) {
@@ -331,8 +489,9 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params) {
     // (each look-up a cache miss); most coarse leaves are such cells.
     const double lf = tree.field ? tree.field->lipschitz() : 0.0;
     const bool lipschitz_cells = !spherical && lf > 0.0 && !tree.field->sign_may_jump();
-    // a leaf coarser than the finest level: its edges are not finest edges, nothing to share
-    auto coarse_leaf = [&](std::uint32_t li) {
+    // a leaf coarser than the finest level: its edges are not finest edges, nothing to share. *out (when not null)
+    // receives its QEF if it has a vertex
+    auto coarse_leaf = [&](std::uint32_t li, Qef* out) {
         OctreeNode& nd = tree.nodes[li];
         nd.vertex = invalid_index;
         if (lipschitz_cells) {
@@ -362,19 +521,24 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params) {
             const Crossing x = compute(q[e.c], q[e.d], v[e.c], v[e.d]);
             qef.add(x.point, x.normal);
         }
-        if (qef.count > 0) add_vertices(li, &qef, &edges, 1, q[0], q[7]);
+        if (qef.count == 0) return;
+        add_vertices(li, &qef, &edges, 1, q[0], q[7]);
+        if (out) *out = qef;
     };
     // Finest leaves come as the 8 children of a node of level L − 1: their 8 × 8 corners are the 27 points of the
     // parent's 3×3×3 sub-lattice, p = i + 3j + 9k, and their 8 × 12 edges are 54 edges of it. Speed: look the
     // samples up once (Octree::sub_lattice_values), find the sign-changing edges of the whole group with bit
-    // operations, and get each of those crossings once for the 8 leaves.
-    auto finest_group = [&](std::uint32_t first) {
+    // operations, and get each of those crossings once for the 8 leaves. With `fused`, child_qef[c] receives child
+    // c's QEF when it has one vertex (a leaf with several takes part in no collapse).
+    auto finest_group = [&](std::uint32_t first, QefSlot (&child_qef)[8]) {
         const glm::ivec3 base = tree.corner(tree.nodes[first], 0);
         double sub[27];
         tree.sub_lattice_values(base, sub);
         std::uint32_t in = 0;  // bit p: sub-lattice point p is inside
         for (int p = 0; p < 27; ++p) in |= std::uint32_t(inside(sub[p])) << p;
         std::uint32_t index[3 * 27];  // the crossing of the group's edge from point p along axis a: index[27 a + p]
+        std::uint32_t done[3 * 27];   // rooms of `computed` free once this group is done
+        int n_done = 0;
         if (in != 0 && in != all_sub_points) {
             for (int a = 0; a < 3; ++a) {
                 const int stride = a == 0 ? 1 : a == 1 ? 3 : 9;
@@ -383,13 +547,7 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params) {
                     // Speed: qd without qd[a] += 1, whose variable index made the compiler write qc and qd to
                     // memory and read them back whole before the stores had landed (a stall per edge)
                     const glm::ivec3 qc = base + sub_offset(p), qd = qc + glm::ivec3(a == 0, a == 1, a == 2);
-                    // an edge inside the parent cell belongs to no other group: no need to file it
-                    if ((interior_edges[a] >> p) & 1u) {
-                        index[27 * a + p] = std::uint32_t(computed.size());
-                        computed.push_back(compute(qc, qd, sub[p], sub[p + stride]));
-                    } else {
-                        index[27 * a + p] = finest_crossing(qc, qd, a, sub[p], sub[p + stride]);
-                    }
+                    index[27 * a + p] = finest_crossing(qc, qd, a, sub[p], sub[p + stride], done, n_done);
                 }
             }
         }
@@ -416,23 +574,59 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params) {
             }
             const glm::ivec3 q0 = base + glm::ivec3(child & 1, (child >> 1) & 1, child >> 2);
             add_vertices(first + child, qef, surface->edges, surface->count, q0, q0 + 1);
+            if (fused && surface->count == 1) child_qef[child].qef = qef[0];
         }
+        free_rooms.insert(free_rooms.end(), done, done + n_done);
     };
-    // the leaves depth first, a group of finest siblings at once
-    tree.depth_first([&](std::uint32_t n) {
-        const OctreeNode& nd = tree.nodes[n];
+    auto finest_sibling_error = [](std::uint32_t n) {  // its parent has a child that is not a leaf: split() past L
+        return std::logic_error("place_vertices: node " + std::to_string(n) + " of the finest level has a sibling "
+                                "with children");
+    };
+    // The leaves depth first, children in the order c = 0..7, a group of finest siblings at once. Fused with
+    // simplify (memory), each node is tried for a collapse as soon as its subtree is done: the children's vertices
+    // are then the last ones made, so a collapse takes them back, and the QEFs live on this recursion's stack, not
+    // one per vertex. Returns whether node n is a leaf now; out: its QEF, written when it is a leaf with one vertex.
+    auto visit = [&](auto& self, std::uint32_t n, QefSlot& out) -> bool {
+        OctreeNode& nd = tree.nodes[n];
         if (nd.is_leaf()) {
-            if (nd.level == tree.max_level)  // its parent has a child that is not a leaf: split() past level L
-                throw std::logic_error("place_vertices: node " + std::to_string(n) + " of the finest level has a "
-                                       "sibling with children");
-            coarse_leaf(n);
-            return false;
+            if (nd.level == tree.max_level) throw finest_sibling_error(n);
+            coarse_leaf(n, fused ? &out.qef : nullptr);
+            return true;
         }
-        if (!has_finest_children(tree, nd)) return true;
-        finest_group(nd.first_child);
-        return false;
-    });
+        const std::size_t first_vertex = tree.vertices.size();
+        QefSlot child_qef[8];
+        bool all_leaves = true;
+        if (has_finest_children(tree, nd)) {
+            finest_group(nd.first_child, child_qef);
+        } else {
+            for (int c = 0; c < 8; ++c) all_leaves = self(self, nd.first_child + std::uint32_t(c), child_qef[c]) && all_leaves;
+        }
+        if (!fused || !all_leaves) return false;
+        const Collapse r = collapse_test(tree, nd, fused->tolerance, fused->tau,
+                                         [&](int c, std::uint32_t) -> const Qef& { return child_qef[c].qef; });
+        if (!r.ok) return false;
+        tree.vertices.resize(first_vertex);
+        nd.first_child = invalid_index;
+        nd.signs = r.signs;
+        nd.vertex = invalid_index;
+        if (r.has_vertex) {
+            nd.vertex = std::uint32_t(tree.vertices.size());
+            tree.vertices.push_back(r.vertex);
+            out.qef = r.merged.qef;
+        }
+        ++fused->collapses;
+        return true;
+    };
+    QefSlot root_qef;
+    visit(visit, 0, root_qef);
     return crossings;
+}
+}  // namespace
+// END SOLUTION
+
+std::size_t place_vertices(Octree& tree, const VertexParams& params) {
+    // BEGIN SOLUTION
+    return place_vertices_impl(tree, params, &tree.qefs, nullptr);
     // END SOLUTION
 }
 
@@ -440,69 +634,36 @@ std::size_t simplify(Octree& tree, double tolerance, double tau) {
     // BEGIN SOLUTION
     if (tree.coordinates != Coordinates::cartesian)
         throw std::invalid_argument("simplify: only Cartesian octrees are simplified");
+    if (tree.qefs.size() != tree.vertices.size())
+        throw std::invalid_argument("simplify: tree.qefs must hold the QEF of every vertex (call place_vertices first)");
     std::size_t collapses = 0;
     constexpr std::uint32_t prefetch_distance = 32;  // vertices, about 4 groups of finest leaves
     // children always have larger indices than their parent: one reverse sweep is bottom-up
     for (std::size_t ni = tree.nodes.size(); ni-- > 0;) {
-        OctreeNode nd = tree.nodes[ni];
+        const OctreeNode nd = tree.nodes[ni];
         if (nd.is_leaf()) continue;
         bool all_leaves = true;
         for (int c = 0; c < 8 && all_leaves; ++c) all_leaves = tree.nodes[nd.first_child + c].is_leaf();
         if (!all_leaves) continue;
-        const std::int32_t s = tree.cell_span(nd.level);
-        const glm::ivec3 base = tree.corner(nd, 0);
-        // the signs at the 27 sub-lattice points (bit i + 3j + 9k): the children's corners, which place_vertices
-        // recorded in their sign configurations. (0) Every child's own corners form one sheet: one piece, no
-        // ambiguous face (else the merged vertex would join pieces, or a face of the parent would be crossed twice)
-        std::uint32_t sub = 0;
-        bool children_single = true;
-        for (int child = 0; child < 8; ++child) {
-            const std::uint8_t signs = tree.nodes[nd.first_child + child].signs;
-            sub |= simplify_tables.spread[child][signs];
-            children_single = children_single && simplify_tables.single_sheet[signs];
-        }
-        if (!children_single) continue;
-        // (1) the parent's corner signs form one sheet
-        int in_mask = 0;
-        for (int c = 0; c < 8; ++c) in_mask |= int((sub >> simplify_tables.point[c][c]) & 1u) << c;
-        if (!simplify_tables.single_sheet[in_mask]) continue;
-        // (2) every sub-lattice point that is the centre of an edge, face or the cell agrees with one of that
-        //     feature's corners
-        if ((sub & ~simplify_tables.may_be_inside[in_mask]) ||
-            (~sub & all_sub_points & ~simplify_tables.may_be_outside[in_mask]))
-            continue;
-        // (3) the merged QEF fits well and its minimiser lies in the cell
-        Qef merged;
-        for (int c = 0; c < 8; ++c) {
-            std::uint32_t vi = tree.nodes[nd.first_child + c].vertex;
-            if (vi == invalid_index) continue;
-            merged.merge(tree.vertices[vi].qef);
+        const Collapse r = collapse_test(tree, nd, tolerance, tau, [&](int, std::uint32_t vi) -> const Qef& {
             // Speed: this sweep meets the vertices in decreasing order (place_vertices made them in the order of the
             // nodes); ask for the QEFs a few groups ahead, or each merge waits for main memory
             if (vi >= prefetch_distance) {
-                const char* ahead = reinterpret_cast<const char*>(&tree.vertices[vi - prefetch_distance]);
-                for (std::size_t line = 0; line < sizeof(DualVertex); line += 64) __builtin_prefetch(ahead + line);
+                const char* ahead = reinterpret_cast<const char*>(&tree.qefs[vi - prefetch_distance]);
+                for (std::size_t line = 0; line < sizeof(Qef); line += 64) __builtin_prefetch(ahead + line);
             }
+            return tree.qefs[vi];
+        });
+        if (!r.ok) continue;
+        OctreeNode& parent = tree.nodes[ni];
+        parent.first_child = invalid_index;
+        parent.vertex = invalid_index;
+        parent.signs = r.signs;
+        if (r.has_vertex) {
+            parent.vertex = std::uint32_t(tree.vertices.size());
+            tree.vertices.push_back(r.vertex);
+            tree.qefs.push_back(r.merged.qef);
         }
-        std::uint32_t new_vertex = invalid_index;
-        if (merged.count > 0) {
-            if (in_mask == 0 || in_mask == 0xff) continue;  // a surface the coarse corners cannot see
-            glm::dvec3 x = merged.solve(tau);
-            glm::dvec3 lo = tree.lattice_point(base), hi = tree.lattice_point(base + glm::ivec3(s));
-            double slack = 1e-9 * tree.size;
-            if (glm::any(glm::lessThan(x, lo - slack)) || glm::any(glm::greaterThan(x, hi + slack))) continue;
-            if (std::sqrt(std::max(0.0, merged.error(x)) / merged.count) > tolerance) continue;
-            new_vertex = std::uint32_t(tree.vertices.size());
-            std::uint16_t edges = 0;  // the parent's sign-changing cell edges
-            for (int e = 0; e < 12; ++e)
-                edges |= std::uint16_t((((in_mask >> cell_edge_corners[e][0]) ^ (in_mask >> cell_edge_corners[e][1])) & 1) << e);
-            tree.vertices.push_back({glm::clamp(x, lo, hi), merged, edges, 1});
-        } else if (in_mask != 0 && in_mask != 0xff) {
-            continue;  // sign changes without crossings: leave it alone
-        }
-        tree.nodes[ni].first_child = invalid_index;
-        tree.nodes[ni].vertex = new_vertex;
-        tree.nodes[ni].signs = std::uint8_t(in_mask);
         ++collapses;
     }
     return collapses;
@@ -536,19 +697,12 @@ PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles) {
     prefer_huge_pages(soup.positions);  // Speed: 2 MiB pages for large arrays (lib memory.hpp)
     prefer_huge_pages(soup.indices);
     prefer_huge_pages(soup.offsets);
-    // Speed: the dual vertices' positions copied in one sequential pass into a compact array. The polygons reach
-    // them in a scattered order, and each DualVertex (position + QEF) is 136 bytes: gathering positions from there
-    // costs a cache miss per vertex, from here mostly cache hits.
-    std::vector<glm::dvec3> position;
-    position.reserve(tree.vertices.size());
-    prefer_huge_pages(position);
-    // and, in the same pass, each vertex's piece: its edges (bits 0-11) and its leaf's number of vertices (from bit 16)
+    // Speed: each vertex's piece, its edges (bits 0-11) and its leaf's number of vertices (from bit 16), copied in one
+    // sequential pass into a compact array: the polygons ask for them in a scattered order, 4 bytes a vertex here
+    // against a cache line per 2 vertices in tree.vertices
     std::vector<std::uint32_t> piece_data;
     piece_data.reserve(tree.vertices.size());
-    for (const DualVertex& v : tree.vertices) {
-        position.push_back(v.position);
-        piece_data.push_back(std::uint32_t(v.edges) | std::uint32_t(v.pieces) << 16);
-    }
+    for (const DualVertex& v : tree.vertices) piece_data.push_back(std::uint32_t(v.edges) | std::uint32_t(v.pieces) << 16);
     // the vertex standing for the piece that crosses cell edge e of the leaf whose first vertex is `first`
     auto piece_vertex = [&](std::uint32_t first, int e) {
         if (first == invalid_index) return first;
@@ -563,7 +717,7 @@ PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles) {
     auto soup_index = [&](std::uint32_t vertex) {
         if (remap[vertex] == invalid_index) {
             remap[vertex] = std::uint32_t(soup.positions.size());
-            soup.positions.push_back(position[vertex]);
+            soup.positions.push_back(tree.vertices[vertex].position);
         }
         return remap[vertex];
     };
@@ -838,10 +992,13 @@ PolygonSoup dual_contour_cartesian(const ScalarField& f, const CartesianParams& 
     // BEGIN SOLUTION
     auto t0 = std::chrono::steady_clock::now();
     Octree tree = build_octree(f, params);
-    std::size_t crossings = place_vertices(tree, {params.tau, params.crossing_tolerance});
-    std::size_t collapses = 0;
-    if (params.simplify_tolerance > 0.0)
-        collapses = simplify(tree, params.simplify_tolerance * tree.size / tree.resolution(), params.tau);
+    // place_vertices and simplify in one pass (memory: no QEF per vertex, no second sweep), then the polygons
+    // without the samples, which they do not read: the same soup as place_vertices, simplify and contour
+    FusedSimplify fused{params.simplify_tolerance * tree.size / tree.resolution(), params.tau};
+    const std::size_t crossings = place_vertices_impl(tree, {params.tau, params.crossing_tolerance}, nullptr,
+                                                      params.simplify_tolerance > 0.0 ? &fused : nullptr);
+    const std::size_t collapses = fused.collapses;
+    tree.release_samples();
     PolygonSoup soup = contour(tree);
     if (stats) {
         *stats = DcStats{};

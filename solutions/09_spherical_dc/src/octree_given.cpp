@@ -28,9 +28,15 @@ void Octree::init_cartesian(const ScalarField& f, int level, const glm::dvec3& l
     field = &f;
     nodes.assign(1, OctreeNode{});
     vertices.clear();
+    qefs.clear();
     cache_ = BlockGrid<double>(std::numeric_limits<double>::quiet_NaN(), resolution() + 1);
     even_cache_ = BlockGrid<double>(std::numeric_limits<double>::quiet_NaN(), resolution() / 2 + 1);
     samples_ = 0;
+}
+
+void Octree::release_samples() {
+    cache_ = BlockGrid<double>(std::numeric_limits<double>::quiet_NaN(), resolution() + 1);
+    even_cache_ = BlockGrid<double>(std::numeric_limits<double>::quiet_NaN(), resolution() / 2 + 1);
 }
 
 void Octree::init_spherical(const ScalarField& f, int level, const glm::dvec3& o, double rmin, double rmax) {
@@ -47,6 +53,7 @@ void Octree::init_spherical(const ScalarField& f, int level, const glm::dvec3& o
     field = &f;
     nodes.assign(1, OctreeNode{});
     vertices.clear();
+    qefs.clear();
     cache_ = BlockGrid<double>(std::numeric_limits<double>::quiet_NaN(), resolution() + 1);
     even_cache_ = BlockGrid<double>(std::numeric_limits<double>::quiet_NaN(), resolution() / 2 + 1);
     samples_ = 0;

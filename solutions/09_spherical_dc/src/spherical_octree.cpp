@@ -96,6 +96,9 @@ PolygonSoup dual_contour_spherical(const ScalarField& f, const SphericalParams& 
     }
     Octree tree = build_spherical_octree(f, params.max_level, origin, params.r_min, r_max);
     std::size_t crossings = place_vertices(tree, {params.tau, params.crossing_tolerance});
+    // memory: spherical trees are not simplified, and the polygons read neither QEFs nor samples
+    tree.qefs = {};
+    tree.release_samples();
     std::vector<PoleRing> rings;
     PolygonSoup soup = contour(tree, &rings);
     PoleFillResult fill = fill_poles(soup, rings, f, origin, params.pole_fill);

@@ -203,22 +203,22 @@ struct OctreeNode {
 };
 static_assert(sizeof(OctreeNode) == 16, "an octree node is 16 bytes: 16-bit cell indices (levels <= 10)");
 
-//! A dual vertex: its position, the QEF it minimises (kept for simplification and for tests), and which piece of
-//! its leaf's surface it stands for.
+//! A dual vertex: its position and which piece of its leaf's surface it stands for (32 bytes). The QEF it minimises
+//! is kept apart, in Octree::qefs (simplify and the tests need it; contour does not).
 //! Layout (handout §1.1): a leaf's vertices are consecutive, tree.vertices[nd.vertex + k] for k = 0 .. pieces − 1
 //! (OctreeNode::vertex is the first); every one of them holds the same `pieces`. A finest leaf has one vertex per
 //! piece of cell_surface(signs, face_joins(tree, leaf)), in that order; any other leaf has one vertex (pieces = 1)
 //! holding all its sign-changing edges.
 struct DualVertex {
     glm::dvec3 position{0.0};
-    Qef qef;
     //! The sign-changing edges of the leaf this vertex's piece crosses: bit e for cell edge e (numbering of
     //! cell_edge_corners). The polygon around a minimal edge uses, in a leaf with several vertices, the one whose
     //! `edges` holds the leaf's cell edge containing it.
     std::uint16_t edges = 0;
     std::uint8_t pieces = 1;  //!< how many vertices the leaf has (1 to 4)
-    GEOLAB_FIELDS(position, qef, edges, pieces)
+    GEOLAB_FIELDS(position, edges, pieces)
 };
+static_assert(sizeof(DualVertex) == 32, "a dual vertex is 32 bytes: its position and its piece");
 
 //! A sparse map from lattice points to values of T, stored as dense blocks of B×B×B slots (B = 4; initialised to
 //! `empty`). Blocks are found through a directory: a dense array of block ids when the coordinates' extent is
@@ -437,9 +437,12 @@ public:
     const ScalarField* field = nullptr;
     std::vector<OctreeNode> nodes;     //!< nodes[0] is the root (level 0); unreachable nodes may remain
     std::vector<DualVertex> vertices;  //!< dual vertices referenced by leaves (OctreeNode::vertex)
+    //! qefs[i] is the QEF that vertices[i] minimises: place_vertices and simplify keep the two arrays side by side.
+    //! The one-shot functions need no QEF after simplification and may leave it empty (handout §5.4: memory).
+    std::vector<Qef> qefs;
 
-    //! Set the domain (and the sin/cos tables of the spherical lattice); clears nodes, vertices and cache and
-    //! creates the root. \throw std::invalid_argument for max_level ∉ [1, 10], size ≤ 0, r_min < 0, r_min ≥ r_max.
+    //! Set the domain (and the sin/cos tables of the spherical lattice); clears nodes, vertices, qefs and cache
+    //! and creates the root. \throw std::invalid_argument for max_level ∉ [1, 10], size ≤ 0, r_min < 0, r_min ≥ r_max.
     void init_cartesian(const ScalarField& f, int level, const glm::dvec3& min_corner, double size);
     void init_spherical(const ScalarField& f, int level, const glm::dvec3& origin, double r_min, double r_max);
 
@@ -522,11 +525,14 @@ public:
     }
     //! Number of nodes reachable from the root.
     std::size_t reachable_nodes() const;
-    //! Number of cached field samples.
+    //! Number of field samples taken (Octree::sample calls, cached or not).
     std::size_t samples() const { return samples_; }
+    //! Free both sample caches (memory: the one-shot functions drop them before contour(), which reads no sample).
+    //! A value asked for later is sampled again; samples() keeps counting.
+    void release_samples();
     //! What crosses the grading boundary (geolab/boundary.hpp): the whole state, the sample caches included. The
     //! field crosses as "which field the test passed" (it must be one of the call's).
-    GEOLAB_FIELDS(coordinates, max_level, min_corner, size, origin, r_min, r_max, field, nodes, vertices, cache_,
+    GEOLAB_FIELDS(coordinates, max_level, min_corner, size, origin, r_min, r_max, field, nodes, vertices, qefs, cache_,
                   even_cache_, samples_, sin_t_, cos_t_, sin_p_, cos_p_)
 
     //! Append 8 children to node n (a leaf), in the order of the child index c. Returns the first child index.
@@ -642,7 +648,7 @@ struct VertexParams {
 //! Task: give every leaf with a sign change on one of its 12 edges its dual vertices: a finest leaf one per piece of
 //! its surface, cell_surface(signs, face_joins(tree, leaf)), in that order; a coarser leaf one for all its
 //! crossings. Store them as DualVertex's layout says (consecutive from OctreeNode::vertex, each with its piece's
-//! `edges` and the leaf's number of vertices in `pieces`). For each sign-changing edge find the crossing
+//! `edges` and the leaf's number of vertices in `pieces`), and each one's Qef at the same index of tree.qefs. For each sign-changing edge find the crossing
 //! (Cartesian: find_crossing on the segment; spherical: find_crossing_arc along the radial segment or the θ/φ arc,
 //! always from the edge's lower to its upper lattice end so that neighbours compute identical points) and add it to
 //! the Qef of its piece; solve each with params.tau. The vertex is the minimiser when it lies in the cell; else the
@@ -654,7 +660,7 @@ struct VertexParams {
 //! spherical tree an edge whose lower end canonical() merges — the polar axis, the origin when r_min = 0 — must be
 //! keyed by its upper end, or all the θ-edges leaving a pole would share one crossing).
 //! Also record every leaf's sign configuration in OctreeNode::signs (leaves without a vertex too).
-//! Replaces tree.vertices. \return the number of crossings computed.
+//! Replaces tree.vertices and tree.qefs. \return the number of crossings computed.
 std::size_t place_vertices(Octree& tree, const VertexParams& params);
 
 //! Task (Cartesian octrees only): Ju et al.'s bottom-up simplification. A node whose 8 children are all leaves
@@ -663,10 +669,12 @@ std::size_t place_vertices(Octree& tree, const VertexParams& params);
 //! corners edge-connected), (2) the sign at the midpoint of each of its edges agrees with one of that edge's
 //! ends, at each face centre with one of the face's corners, at its centre with one of its corners, (3) the
 //! merged QEF's unclamped solution lies in the cell and √(Q/count) ≤ tolerance (a length). The new leaf gets one
-//! vertex, the merged QEF's (edges: the parent's sign-changing cell edges, pieces 1; children's vertices stay in
-//! tree.vertices, unreferenced) and its `signs`. Repeats up the tree. The signs at the 27 points of the parent's
-//! 3×3×3 sub-lattice are the children's corner signs (call place_vertices first).
-//! \return the number of collapses.
+//! vertex, the merged QEF's (edges: the parent's sign-changing cell edges, pieces 1), appended to tree.vertices with
+//! the merged Qef appended to tree.qefs (the children's vertices stay, unreferenced), and its `signs`. Repeats up
+//! the tree. The signs at the 27 points of the parent's 3×3×3 sub-lattice are the children's corner signs, and the
+//! children's QEFs are in tree.qefs (call place_vertices first).
+//! \return the number of collapses. \throw std::invalid_argument for a spherical tree, or when tree.qefs does not
+//! hold one Qef per vertex (tree.qefs.size() != tree.vertices.size()); the tree is then unchanged.
 std::size_t simplify(Octree& tree, double tolerance, double tau);
 
 //! A hole around the polar axis left by contour() on a spherical octree: the dual vertices of the leaves around
