@@ -4,6 +4,7 @@
 #include <bit>
 #include <chrono>
 #include <cmath>
+#include <queue>
 #include <stdexcept>
 #include <string>
 

@@ -4,6 +4,7 @@
 #include <bit>
 #include <chrono>
 #include <cmath>
+#include <queue>
 #include <stdexcept>
 #include <string>
 
@@ -582,6 +583,39 @@ std::size_t place_vertices_impl(Octree& tree, const VertexParams& params, std::v
         return std::logic_error("place_vertices: node " + std::to_string(n) + " of the finest level has a sibling "
                                 "with children");
     };
+    // Memory (fused: the one-shot's path). The samples of lattice points with an odd coordinate serve only the
+    // groups of finest leaves, which the traversal below meets in Morton order (x fastest), where every cell's lower
+    // neighbours come first. A region R of level L − 2 (4³ finest cells: one block of those samples) is read by the
+    // groups of the regions R + d, d ∈ {−1, 0, 1}³ (face_joins looks two cells back); once R + (1, 1, 1), the last
+    // of them in that order, is done, R's block is released. `pending`: (Morton key of R + (1, 1, 1), R).
+    const int region_level = tree.max_level - 2;
+    const bool release = fused && !spherical && region_level >= 2;
+    const std::int32_t regions = std::int32_t(1) << std::max(region_level, 0);
+    using Pending = std::pair<std::uint64_t, glm::ivec3>;
+    auto later = [](const Pending& a, const Pending& b) { return a.first > b.first; };
+    std::priority_queue<Pending, std::vector<Pending>, decltype(later)> pending(later);
+    auto spread = [](std::uint64_t v) {  // the bits of v (< 2^10) 3 places apart
+        v = (v | v << 16) & 0x30000ffull;
+        v = (v | v << 8) & 0x300f00full;
+        v = (v | v << 4) & 0x30c30c3ull;
+        return (v | v << 2) & 0x9249249ull;
+    };
+    auto morton = [&](std::int32_t x, std::int32_t y, std::int32_t z) {
+        return spread(std::uint64_t(x)) | spread(std::uint64_t(y)) << 1 | spread(std::uint64_t(z)) << 2;
+    };
+    // node nd (level ≤ L − 2) is done: so is every region before the end of its range in Morton order
+    auto regions_done = [&](const OctreeNode& nd) {
+        const int shift = region_level - nd.level;
+        if (shift == 0) {
+            const glm::ivec3 r(nd.x, nd.y, nd.z), last = glm::min(r + 1, glm::ivec3(regions - 1));
+            pending.push({morton(last.x, last.y, last.z), r});
+        }
+        const std::uint64_t end = (morton(nd.x, nd.y, nd.z) + 1) << (3 * shift);
+        while (!pending.empty() && pending.top().first < end) {
+            tree.release_fine_samples(pending.top().second);
+            pending.pop();
+        }
+    };
     // The leaves depth first, children in the order c = 0..7, a group of finest siblings at once. Fused with
     // simplify (memory), each node is tried for a collapse as soon as its subtree is done: the children's vertices
     // are then the last ones made, so a collapse takes them back, and the QEFs live on this recursion's stack, not
@@ -591,6 +625,7 @@ std::size_t place_vertices_impl(Octree& tree, const VertexParams& params, std::v
         if (nd.is_leaf()) {
             if (nd.level == tree.max_level) throw finest_sibling_error(n);
             coarse_leaf(n, fused ? &out.qef : nullptr);
+            if (release && nd.level <= region_level) regions_done(nd);
             return true;
         }
         const std::size_t first_vertex = tree.vertices.size();
@@ -601,21 +636,26 @@ std::size_t place_vertices_impl(Octree& tree, const VertexParams& params, std::v
         } else {
             for (int c = 0; c < 8; ++c) all_leaves = self(self, nd.first_child + std::uint32_t(c), child_qef[c]) && all_leaves;
         }
-        if (!fused || !all_leaves) return false;
-        const Collapse r = collapse_test(tree, nd, fused->tolerance, fused->tau,
-                                         [&](int c, std::uint32_t) -> const Qef& { return child_qef[c].qef; });
-        if (!r.ok) return false;
-        tree.vertices.resize(first_vertex);
-        nd.first_child = invalid_index;
-        nd.signs = r.signs;
-        nd.vertex = invalid_index;
-        if (r.has_vertex) {
-            nd.vertex = std::uint32_t(tree.vertices.size());
-            tree.vertices.push_back(r.vertex);
-            out.qef = r.merged.qef;
+        bool collapsed = false;
+        if (fused && all_leaves) {
+            const Collapse r = collapse_test(tree, nd, fused->tolerance, fused->tau,
+                                             [&](int c, std::uint32_t) -> const Qef& { return child_qef[c].qef; });
+            if (r.ok) {
+                tree.vertices.resize(first_vertex);
+                nd.first_child = invalid_index;
+                nd.signs = r.signs;
+                nd.vertex = invalid_index;
+                if (r.has_vertex) {
+                    nd.vertex = std::uint32_t(tree.vertices.size());
+                    tree.vertices.push_back(r.vertex);
+                    out.qef = r.merged.qef;
+                }
+                ++fused->collapses;
+                collapsed = true;
+            }
         }
-        ++fused->collapses;
-        return true;
+        if (release && nd.level <= region_level) regions_done(nd);
+        return collapsed;
     };
     QefSlot root_qef;
     visit(visit, 0, root_qef);
@@ -697,19 +737,13 @@ PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles) {
     prefer_huge_pages(soup.positions);  // Speed: 2 MiB pages for large arrays (lib memory.hpp)
     prefer_huge_pages(soup.indices);
     prefer_huge_pages(soup.offsets);
-    // Speed: each vertex's piece, its edges (bits 0-11) and its leaf's number of vertices (from bit 16), copied in one
-    // sequential pass into a compact array: the polygons ask for them in a scattered order, 4 bytes a vertex here
-    // against a cache line per 2 vertices in tree.vertices
-    std::vector<std::uint32_t> piece_data;
-    piece_data.reserve(tree.vertices.size());
-    for (const DualVertex& v : tree.vertices) piece_data.push_back(std::uint32_t(v.edges) | std::uint32_t(v.pieces) << 16);
     // the vertex standing for the piece that crosses cell edge e of the leaf whose first vertex is `first`
     auto piece_vertex = [&](std::uint32_t first, int e) {
         if (first == invalid_index) return first;
-        const std::uint32_t n = piece_data[first] >> 16;
+        const std::uint32_t n = tree.vertices[first].pieces;
         if (n <= 1) return first;
         for (std::uint32_t k = 0; k < n; ++k)
-            if ((piece_data[first + k] >> e) & 1u) return first + k;
+            if ((tree.vertices[first + k].edges >> e) & 1u) return first + k;
         throw TopologyError("contour: the leaf with vertices " + std::to_string(first) + " .. " +
                             std::to_string(first + n - 1) + " has none whose edges hold its sign-changing edge " +
                             std::to_string(e));
@@ -727,11 +761,10 @@ PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles) {
         return soup_index(l.vertex);
     };
     auto leaf_ref = [&](std::uint32_t l) { return LeafRef{l, tree.nodes[l].vertex, tree.nodes[l].level}; };
-    // finest leaves by cell index: neighbours at the finest level without descending the tree. Speed: the grid
-    // holds their vertex (4 bytes a cell), so that the (large) node array is not read again for them.
-    constexpr std::uint32_t not_finest = invalid_index, no_vertex = invalid_index - 1;
-    BlockGrid<std::uint32_t> finest(not_finest, n_res);
-    auto finest_slot = [&](const OctreeNode& nd) { return nd.vertex == invalid_index ? no_vertex : nd.vertex; };
+    // The finest leaves by cell index, to reach neighbours at the finest level without descending the tree: a grid
+    // over the cells of level L − 1 holding the first child of each node there that has children (memory: 4 bytes
+    // for 8 finest cells; their 8 nodes are side by side in the node array).
+    BlockGrid<std::uint32_t> parents(invalid_index, std::max(n_res / 2, 1));
     // One depth-first walk fills the grid and sorts the leaves: `groups` holds the first child of every node of
     // level L − 1 whose 8 children are (finest) leaves, `others` every other leaf. Speed: the Cartesian polygons
     // are made a group at a time (finest_group below); spherical trees take every leaf one by one (`others`).
@@ -739,30 +772,41 @@ PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles) {
     tree.depth_first([&](std::uint32_t n) {
         const OctreeNode& nd = tree.nodes[n];
         if (nd.is_leaf()) {
-            if (nd.level == tree.max_level) finest.slot({nd.x, nd.y, nd.z}) = finest_slot(nd);
             others.push_back(n);
             return false;
         }
+        if (nd.level + 1 == tree.max_level) parents.slot({nd.x, nd.y, nd.z}) = nd.first_child;
         if (!has_finest_children(tree, nd)) return true;
         const std::uint32_t first = nd.first_child;
-        // the 8 siblings' cells (2x, 2y, 2z) + {0, 1}³ are 8 slots of one block
-        std::uint32_t* slots = finest.block_of({2 * nd.x, 2 * nd.y, 2 * nd.z});
-        for (int c = 0; c < 8; ++c) {
-            const OctreeNode& ch = tree.nodes[first + c];
-            slots[BlockGrid<std::uint32_t>::index_in_block({ch.x, ch.y, ch.z})] = finest_slot(ch);
-            if (spherical) others.push_back(first + c);
-        }
-        if (!spherical) groups.push_back(first);
+        if (spherical)
+            for (int c = 0; c < 8; ++c) others.push_back(first + c);
+        else
+            groups.push_back(first);
         return false;
     });
     // the vertex of the finest leaf in finest cell `cell`, or invalid_index when that cell is not a finest leaf with
     // a vertex (or outside the domain)
-    auto finest_vertex = [&](glm::ivec3 cell) {
+    // the node of finest cell `cell` when it is a leaf, or null (not a finest leaf, or outside the domain)
+    auto finest_leaf = [&](glm::ivec3 cell) -> const OctreeNode* {
         if (spherical) cell.z &= n_res - 1;
         if (cell.x < 0 || cell.y < 0 || cell.z < 0 || cell.x >= n_res || cell.y >= n_res || cell.z >= n_res)
-            return invalid_index;
-        const std::uint32_t v = finest.get(cell);
-        return v == not_finest || v == no_vertex ? invalid_index : v;
+            return nullptr;
+        const std::uint32_t first = parents.get({cell.x >> 1, cell.y >> 1, cell.z >> 1});
+        if (first == invalid_index) return nullptr;
+        const OctreeNode& nd = tree.nodes[first + std::uint32_t((cell.x & 1) | (cell.y & 1) << 1 | (cell.z & 1) << 2)];
+        return nd.is_leaf() ? &nd : nullptr;
+    };
+    auto finest_vertex = [&](glm::ivec3 cell) {
+        const OctreeNode* nd = finest_leaf(cell);
+        return nd ? nd->vertex : invalid_index;
+    };
+    // Speed: the vertex of finest leaf nd's piece crossing its cell edge e (nd.vertex if it has none). A finest leaf
+    // whose signs draw one piece and no ambiguous face has one vertex (DualVertex's layout): no need to read it.
+    const std::array<CellSurface, 256>& surfaces = plain_surfaces();
+    auto finest_piece = [&](const OctreeNode& nd, int e) {
+        if (nd.vertex == invalid_index || (surfaces[nd.signs].count == 1 && !has_ambiguous_face[nd.signs]))
+            return nd.vertex;
+        return piece_vertex(nd.vertex, e);
     };
     auto find_leaf = [&](glm::ivec3 p2) {
         // p2 has odd coordinates: the finest cell containing it is p2 / 2; a finest leaf without a vertex is looked up
@@ -865,8 +909,9 @@ PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles) {
     // cell around is not one, the general path decides (as the leaf-by-leaf loop below would).
     auto finest_group = [&](std::uint32_t first) {
         std::uint32_t in = 0, v[8];
+        const OctreeNode* child_node = &tree.nodes[first];
         for (int child = 0; child < 8; ++child) {
-            const OctreeNode& ch = tree.nodes[first + child];
+            const OctreeNode& ch = child_node[child];
             in |= simplify_tables.spread[child][ch.signs];
             v[child] = ch.vertex;
         }
@@ -877,9 +922,10 @@ PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles) {
             for (std::uint32_t m = (in ^ (in >> stride)) & edge_starts[a]; m; m &= m - 1) {
                 const int p = std::countr_zero(m);
                 const GroupEdge& g = group_edges[a][p];
-                auto neighbour = [&](int k) { return finest_vertex(base + glm::ivec3(g.d[k][0], g.d[k][1], g.d[k][2])); };
+                auto neighbour = [&](int k) { return finest_leaf(base + glm::ivec3(g.d[k][0], g.d[k][1], g.d[k][2])); };
                 if (g.child[0] < 0) {  // quadrant 0 is below this group
-                    if (neighbour(0) != invalid_index) continue;
+                    const OctreeNode* below = neighbour(0);
+                    if (below && below->vertex != invalid_index) continue;
                     for (int k = 1; k < 4; ++k) {
                         if (g.child[k] < 0) continue;
                         const std::uint32_t li = first + std::uint32_t(g.child[k]);
@@ -887,19 +933,17 @@ PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles) {
                     }
                     continue;
                 }
-                std::uint32_t around[4];
+                std::uint32_t around[4];  // the piece vertex of each quadrant's leaf
                 bool all_finest = true;
                 for (int k = 0; k < 4 && all_finest; ++k) {
-                    around[k] = g.child[k] >= 0 ? v[g.child[k]] : neighbour(k);
+                    const OctreeNode* leaf = g.child[k] >= 0 ? &child_node[g.child[k]] : neighbour(k);
+                    around[k] = leaf ? finest_piece(*leaf, g.edge[k]) : invalid_index;
                     all_finest = around[k] != invalid_index;
                 }
                 if (all_finest) {
                     std::uint32_t w[4];
                     const bool lower_inside = (in >> p) & 1u;
-                    for (int k = 0; k < 4; ++k) {
-                        const int j = lower_inside ? k : 3 - k;
-                        w[k] = soup_index(piece_vertex(around[j], g.edge[j]));
-                    }
+                    for (int k = 0; k < 4; ++k) w[k] = soup_index(around[lower_inside ? k : 3 - k]);
                     emit_polygon(w, 4, tree.corner(tree.nodes[first], 0) + sub_offset(p), a, 1, lower_inside);
                 } else {
                     const std::uint32_t li = first + std::uint32_t(g.child[0]);

@@ -262,6 +262,21 @@ public:
     }
     //! The index of q's slot within its block.
     static std::size_t index_in_block(glm::ivec3 q) { return local(q); }
+    //! Forget the block holding q (its slots read `empty` again) and keep its memory for the next block made.
+    void release_block(glm::ivec3 q) {
+        const std::uint64_t key = block_key(q);
+        if (!find_block(key, false)) return;
+        std::uint32_t* id = dense_.empty() ? nullptr : &dense_[(std::size_t(key >> 42) * nb_ + ((key >> 21) & 0x1fffff)) * nb_ + (key & 0x1fffff)];
+        if (!id) {
+            const std::size_t mask = keys_.size() - 1;
+            std::size_t i = hash(key) & mask;
+            while (keys_[i] != key) i = (i + 1) & mask;
+            id = &ids_[i];  // the key stays, with no block (0): a later slot() makes one
+        }
+        released_.push_back(*id - 1);
+        *id = 0;
+        last_ = Memo{};
+    }
     //! The grading boundary's encoding (geolab/grading/wire.hpp; T trivially copyable): the empty value, the
     //! dense directory's blocks per axis (0: hashed), then each block: its key and its B³ slots.
     template <class W>
@@ -369,6 +384,14 @@ private:
         }
         if (*id == 0) {
             if (!create) return false;
+            if (!released_.empty()) {  // reuse a released block's memory
+                *id = released_.back() + 1;
+                released_.pop_back();
+                std::fill_n(block(*id - 1), block_size, empty_);
+                last_.key = key;
+                last_.block = block(*id - 1);
+                return true;
+            }
             if ((blocks_ & ((std::size_t(1) << chunk_shift_) - 1)) == 0) {
                 chunks_.emplace_back().reserve(block_size << chunk_shift_);
                 prefer_huge_pages(chunks_.back());
@@ -405,6 +428,7 @@ private:
     mutable std::vector<std::uint32_t> ids_;  // block id + 1 per hash slot
     mutable std::vector<std::vector<T>> chunks_;
     mutable std::vector<T> empty_block_;  // block_size copies of empty_, made with the first block
+    mutable std::vector<std::uint32_t> released_;  // ids of released blocks, to reuse
     mutable std::size_t blocks_ = 0;
     // the block used last (get() and slot() memoise it); a copy starts without, so that it never points into the
     // blocks of the grid it was copied from
@@ -530,6 +554,10 @@ public:
     //! Free both sample caches (memory: the one-shot functions drop them before contour(), which reads no sample).
     //! A value asked for later is sampled again; samples() keeps counting.
     void release_samples();
+    //! Memory, for a traversal that will ask for none of them again: forget the cached samples of the lattice points
+    //! q with ⌊q / 4⌋ == b (componentwise) that have an odd coordinate (those only finest leaves use). A value asked
+    //! for later is sampled again; samples() keeps counting.
+    void release_fine_samples(glm::ivec3 b) { cache_.release_block(4 * b); }
     //! What crosses the grading boundary (geolab/boundary.hpp): the whole state, the sample caches included. The
     //! field crosses as "which field the test passed" (it must be one of the call's).
     GEOLAB_FIELDS(coordinates, max_level, min_corner, size, origin, r_min, r_max, field, nodes, vertices, qefs, cache_,
