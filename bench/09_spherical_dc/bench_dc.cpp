@@ -175,6 +175,70 @@ public:
     }
 };
 
+//! One call of each side on fresh pages, in a forked child (common/process_stats.hpp), under two allocator settings:
+//! the allocator's defaults (what a program calling either library gets: large blocks freed go back to the kernel;
+//! the goals are judged here), and the timing loop's (freed memory kept in the heap, so the peak also counts memory
+//! freed earlier in the call that a later allocation could not reuse). Measured before the timing loops: their heap,
+//! left behind with the huge-page advice of its large arrays, would give a child's first small allocations 2 MiB
+//! pages (a few MiB more on either side). The "faults/call" counters of the table are the timing loop's calls,
+//! where the allocator may reuse memory an earlier iteration freed.
+struct FreshCosts {
+    geolab::bench::FreshCost geolab[2], openvdb[2];  // [0]: allocator defaults, [1]: the timing loop's settings
+};
+FreshCosts measure_fresh_costs() {
+    unit_sphere();  // made before the fork, so that neither child counts it
+    auto geolab_call = [] {
+        geolab::dc::CartesianParams params;
+        params.max_level = level;
+        auto soup = geolab::dc::dual_contour_cartesian(unit_sphere(), params);
+        benchmark::DoNotOptimize(soup.positions.data());
+    };
+    // glibc's defaults: blocks from 128 KiB up are mapped apart and unmapped when freed, heap tops from 128 KiB
+    // trimmed (mallopt ends the defaults' adaptive threshold; the values are its starting ones)
+    auto with_defaults = [](auto call) {
+        return [call] {
+            mallopt(M_MMAP_THRESHOLD, 128 * 1024);
+            mallopt(M_TRIM_THRESHOLD, 128 * 1024);
+            call();
+        };
+    };
+    FreshCosts c;
+    c.geolab[0] = geolab::bench::fresh_cost(with_defaults(geolab_call));
+    c.geolab[1] = geolab::bench::fresh_cost(geolab_call);
+#ifdef GEOLAB_WITH_OPENVDB
+    auto vdb_call = [] {
+        std::vector<openvdb::Vec3s> points;
+        std::vector<openvdb::Vec4I> quads;
+        auto grid = sample_band(unit_sphere());
+        openvdb::tools::volumeToMesh(*grid, points, quads, 0.0);
+        benchmark::DoNotOptimize(points.data());
+    };
+    c.openvdb[0] = geolab::bench::fresh_cost(with_defaults(vdb_call));
+    c.openvdb[1] = geolab::bench::fresh_cost(vdb_call);
+#endif
+    return c;
+}
+void print_fresh_costs(const FreshCosts& c) {
+    auto cost_line = [](const char* what, const geolab::bench::FreshCost& f) {
+        std::printf("%-44s %10.1f %12.0f\n", what, f.peak_mib, f.faults);
+    };
+    for (int setting = 0; setting < 2; ++setting) {
+        std::printf("\n%-44s %10s %12s\n",
+                    setting == 0 ? "one call on fresh memory, allocator defaults" : "the same, the timing loop's allocator",
+                    "peak MiB", "page faults");
+        cost_line("cartesian DC sphere L8/geolab", c.geolab[setting]);
+#ifdef GEOLAB_WITH_OPENVDB
+        const auto& g = c.geolab[setting];
+        const auto& v = c.openvdb[setting];
+        cost_line("cartesian DC sphere L8/OpenVDB", v);
+        if (v.peak_mib > 0 && v.faults > 0 && g.peak_mib >= 0)
+            std::printf("%-44s %10.2f %12.2f  goals <= 1.00, <= 2.00: %s, %s\n", "geolab / OpenVDB",
+                        g.peak_mib / v.peak_mib, g.faults / v.faults, g.peak_mib <= v.peak_mib ? "met" : "NOT met",
+                        g.faults <= 2.0 * v.faults ? "met" : "NOT met");
+#endif
+    }
+}
+
 }  // namespace
 
 BENCHMARK(cartesian_geolab)->Name("cartesian DC sphere L8/geolab")->Unit(benchmark::kMillisecond)->Iterations(3);
@@ -191,7 +255,7 @@ int main(int argc, char** argv) {
     // Both sides keep the memory they free for their next call, as OpenVDB's 2 KiB leaf nodes already do (malloc
     // serves them from its heap): without this, malloc gives every block above 32 MiB (geolab's dual vertices, 35 MB
     // at level 8) fresh from the kernel at each call, and the kernel zeroes it page by page. What one call costs on
-    // fresh memory is measured apart, at the end (fresh_cost).
+    // fresh memory is measured apart, first (measure_fresh_costs).
     mallopt(M_MMAP_THRESHOLD, 1 << 30);
     mallopt(M_TRIM_THRESHOLD, 1 << 30);
 #ifdef GEOLAB_WITH_OPENVDB
@@ -199,6 +263,7 @@ int main(int argc, char** argv) {
     // single-threaded like geolab: TBB may use only the calling thread
     tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);
 #endif
+    const FreshCosts fresh = measure_fresh_costs();  // first: on the process's own fresh heap
     // run_with_ratios of common/ratio_main.hpp, with a reporter that also keeps CPU medians
     geolab::bench::initialize_with_repetitions(argc, argv);
     DcReporter reporter;
@@ -227,58 +292,7 @@ int main(int argc, char** argv) {
     if (cart_wall > 0.0 && vdb_wall > 0.0 && vdb_cpu > 0.0)
         goal_line("cartesian / OpenVDB sampling + meshing (ratio)", cart_wall / vdb_wall, cart_cpu / vdb_cpu, 1.0, "x");
 
-    // memory (issue 21: peak memory <= OpenVDB's, page faults within 2x of OpenVDB's): one call of each side on
-    // fresh pages, in a forked child (common/process_stats.hpp); the "faults/call" counters above are the same
-    // calls in the timing loop, where the allocator may reuse memory an earlier iteration freed. Two settings: the
-    // allocator's defaults (what a program calling either library gets: large blocks freed go back to the kernel;
-    // the goals are judged here), and the timing loop's (freed memory kept in the heap, so the peak also counts
-    // memory freed earlier in the call that a later allocation could not reuse).
-    unit_sphere();  // made before the fork, so that neither child counts it
-    auto geolab_call = [] {
-        geolab::dc::CartesianParams params;
-        params.max_level = level;
-        auto soup = geolab::dc::dual_contour_cartesian(unit_sphere(), params);
-        benchmark::DoNotOptimize(soup.positions.data());
-    };
-#ifdef GEOLAB_WITH_OPENVDB
-    auto vdb_call = [] {
-        std::vector<openvdb::Vec3s> points;
-        std::vector<openvdb::Vec4I> quads;
-        auto grid = sample_band(unit_sphere());
-        openvdb::tools::volumeToMesh(*grid, points, quads, 0.0);
-        benchmark::DoNotOptimize(points.data());
-    };
-#endif
-    auto cost_line = [](const char* what, const geolab::bench::FreshCost& c) {
-        std::printf("%-44s %10.1f %12.0f\n", what, c.peak_mib, c.faults);
-    };
-    for (const bool defaults : {true, false}) {
-        // glibc's defaults: blocks from 128 KiB up are mapped apart and unmapped when freed, heap tops from 128 KiB
-        // trimmed (mallopt ends the defaults' adaptive threshold; the values are its starting ones)
-        auto with_settings = [defaults](auto call) {
-            return [defaults, call] {
-                if (defaults) {
-                    mallopt(M_MMAP_THRESHOLD, 128 * 1024);
-                    mallopt(M_TRIM_THRESHOLD, 128 * 1024);
-                }
-                call();
-            };
-        };
-        std::printf("\n%-44s %10s %12s\n",
-                    defaults ? "one call on fresh memory, allocator defaults" : "the same, the timing loop's allocator",
-                    "peak MiB", "page faults");
-        const auto geolab_cost = geolab::bench::fresh_cost(with_settings(geolab_call));
-        cost_line("cartesian DC sphere L8/geolab", geolab_cost);
-#ifdef GEOLAB_WITH_OPENVDB
-        const auto vdb_cost = geolab::bench::fresh_cost(with_settings(vdb_call));
-        cost_line("cartesian DC sphere L8/OpenVDB", vdb_cost);
-        if (vdb_cost.peak_mib > 0 && vdb_cost.faults > 0 && geolab_cost.peak_mib >= 0)
-            std::printf("%-44s %10.2f %12.2f  goals <= 1.00, <= 2.00: %s, %s\n", "geolab / OpenVDB",
-                        geolab_cost.peak_mib / vdb_cost.peak_mib, geolab_cost.faults / vdb_cost.faults,
-                        geolab_cost.peak_mib <= vdb_cost.peak_mib ? "met" : "NOT met",
-                        geolab_cost.faults <= 2.0 * vdb_cost.faults ? "met" : "NOT met");
-#endif
-    }
+    print_fresh_costs(fresh);
     benchmark::Shutdown();
     return 0;
 }

@@ -392,10 +392,11 @@ std::size_t place_vertices_impl(Octree& tree, const VertexParams& params, std::v
     };
     const std::array<CellSurface, 256>& surfaces = plain_surfaces();
     // Speed: in the conservative band about half the leaves are cut by the surface, each with about one new crossing;
-    // reserving that much avoids most copies of these large arrays while they grow (7 of 8 nodes are leaves).
+    // reserving that much avoids most copies of these large arrays while they grow (7 of 8 nodes are leaves). The
+    // QEFs (112 bytes a vertex) ask for 2 MiB pages (lib memory.hpp); the vertices (32 bytes) do not: a 2 MiB page
+    // is resident as a whole, and the one-shot's peak memory is what they would add to (handout §Performance).
     const std::size_t leaves_estimate = tree.nodes.size() - tree.nodes.size() / 8;
     tree.vertices.reserve(leaves_estimate / 2);
-    prefer_huge_pages(tree.vertices);  // Speed: 2 MiB pages for the largest arrays (lib memory.hpp)
     if (qefs) {
         qefs->reserve(leaves_estimate / 2);
         prefer_huge_pages(*qefs);
