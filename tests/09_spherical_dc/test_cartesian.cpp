@@ -12,6 +12,51 @@ PolygonSoup cartesian(const ScalarField& f, int level, DcStats* stats = nullptr)
     return dual_contour_cartesian(f, p, stats);
 }
 double finest_h(const ScalarField& f, int level) { return cartesian_domain(f, 0.05).second / double(1 << level); }
+
+// A field given by its signs at the lattice points of level `level`: -1 where inside(i, j, k), +1 elsewhere, and
+// trilinear in between (Lipschitz 2 sqrt(3) / h, so the conservative test splits every cell).
+class LatticeSigns final : public ScalarField {
+public:
+    LatticeSigns(int level, bool (*inside_at)(int, int, int)) : inside_at_(inside_at) {
+        const auto [lo, side] = cartesian_domain(*this, 0.05);
+        lo_ = lo;
+        h_ = side / double(1 << level);
+    }
+    double value(const glm::dvec3& p) const override {
+        glm::dvec3 g;
+        return eval(p, g);
+    }
+    glm::dvec3 gradient(const glm::dvec3& p) const override {
+        glm::dvec3 g;
+        eval(p, g);
+        return g;
+    }
+    geolab::Box bounds() const override { return {glm::dvec3(-1.0), glm::dvec3(1.0)}; }
+    double lipschitz() const override { return 2.0 * std::sqrt(3.0) / h_; }
+
+private:
+    double eval(const glm::dvec3& p, glm::dvec3& grad) const {
+        const glm::dvec3 u = (p - lo_) / h_, i0 = glm::floor(u), t = u - i0;
+        double v = 0.0;
+        grad = glm::dvec3(0.0);
+        for (int c = 0; c < 8; ++c) {
+            const int dx = c & 1, dy = (c >> 1) & 1, dz = c >> 2;
+            const double s = inside_at_(int(i0.x) + dx, int(i0.y) + dy, int(i0.z) + dz) ? -1.0 : 1.0;
+            const double wx = dx ? t.x : 1.0 - t.x, wy = dy ? t.y : 1.0 - t.y, wz = dz ? t.z : 1.0 - t.z;
+            v += s * wx * wy * wz;
+            grad += s / h_ * glm::dvec3((dx ? 1.0 : -1.0) * wy * wz, wx * (dy ? 1.0 : -1.0) * wz, wx * wy * (dz ? 1.0 : -1.0));
+        }
+        return v;
+    }
+    bool (*inside_at_)(int, int, int);
+    glm::dvec3 lo_{0.0};
+    double h_ = 1.0;
+};
+// every face of every cell ambiguous (a 3D checkerboard of signs)
+bool checkerboard(int i, int j, int k) { return ((i + j + k) & 1) == 0; }
+// x-faces at even x ambiguous (inside where y and z have the same parity) and joined inside the cell (at odd x
+// inside unless y is even and z odd), so face_joins looks into the cell beyond every such face, at x - 1
+bool joined_faces(int i, int j, int k) { return (i & 1) == 0 ? (j & 1) == (k & 1) : !((j & 1) == 0 && (k & 1) == 1); }
 }  // namespace
 
 TEST_SUITE("Task 7: Cartesian one-shot") {
@@ -172,6 +217,60 @@ TEST_CASE("dual_contour_cartesian: DcStats describes the tree that was contoured
             CHECK_MESSAGE(same_soup(s, s2), name << ": the one-shot's soup differs from the chain's: " << soup_difference(s, s2));
             CHECK(st.seconds >= 0.0);
         }
+}
+
+TEST_CASE("dual_contour_cartesian: fields whose faces are ambiguous everywhere give the chain's samples and soup" *
+          geolab::points(1) * geolab::whole_chain() *
+          geolab::hint("face_joins reads the samples one cell beyond an ambiguous face whose inside corners the cell "
+                       "itself connects: a one-shot that forgets samples too early, or draws a face differently from "
+                       "the chain, shows up here. Handout §5.4.")) {
+    const std::pair<bool (*)(int, int, int), const char*> patterns[] = {
+        {checkerboard, "checkerboard (every face ambiguous)"},
+        {joined_faces, "x-faces ambiguous and joined in their cell (face_joins looks one cell back)"}};
+    for (const auto& [pattern, name] : patterns)
+        for (int level : {4, 5}) {
+            const LatticeSigns f(level, pattern);
+            CartesianParams p;
+            p.max_level = level;
+            DcStats st;
+            const PolygonSoup s = dual_contour_cartesian(f, p, &st);
+            Octree t = build_octree(f, p);
+            const std::size_t crossings = place_vertices(t, {p.tau, p.crossing_tolerance});
+            simplify(t, p.simplify_tolerance * t.size / t.resolution(), p.tau);
+            const PolygonSoup chain = contour(t);
+            INFO(name << ", level " << level << ": the one-shot took " << st.samples << " samples and "
+                      << st.crossings << " crossings; the chain " << t.samples() << " and " << crossings);
+            REQUIRE(s.n_faces() > 0);
+            CHECK(st.samples == t.samples());
+            CHECK(st.crossings == crossings);
+            CHECK_MESSAGE(same_soup(s, chain), "the soups differ: " << soup_difference(s, chain));
+        }
+}
+
+TEST_CASE("dual_contour_cartesian: at level 7 the same samples and crossings and collapses and soup as the chain" *
+          geolab::points(1) * geolab::whole_chain() *
+          geolab::hint("The one-shot is build_octree -> place_vertices -> simplify -> contour: however it saves time "
+                       "or memory, it samples the same lattice points once each, computes the same crossings once "
+                       "each, and returns the same soup. Handout §5.4.")) {
+    const std::pair<FieldPtr, const char*> shapes[] = {{geolab::sphere({0.05, -0.1, 0.07}, 0.7), "sphere r = 0.7"},
+                                                       {geolab::torus({0, 0, 0}, 0.6, 0.25), "torus"},
+                                                       {geolab::named_implicit("csg"), "csg"}};
+    for (const auto& [f, name] : shapes) {
+        CartesianParams p;
+        p.max_level = 7;
+        DcStats st;
+        const PolygonSoup s = dual_contour_cartesian(*f, p, &st);
+        Octree t = build_octree(*f, p);
+        const std::size_t crossings = place_vertices(t, {p.tau, p.crossing_tolerance});
+        const std::size_t collapses = simplify(t, p.simplify_tolerance * t.size / t.resolution(), p.tau);
+        const PolygonSoup chain = contour(t);
+        INFO(name << ", level 7: the one-shot took " << st.samples << " samples, " << st.crossings << " crossings, "
+                  << st.collapses << " collapses; the chain " << t.samples() << ", " << crossings << ", " << collapses);
+        CHECK(st.samples == t.samples());
+        CHECK(st.crossings == crossings);
+        CHECK(st.collapses == collapses);
+        CHECK_MESSAGE(same_soup(s, chain), "the soups differ: " << soup_difference(s, chain));
+    }
 }
 
 }  // TEST_SUITE

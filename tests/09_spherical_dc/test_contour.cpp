@@ -135,6 +135,82 @@ TEST_CASE("place_vertices: a coarse leaf's signs are its 8 corners' even where i
     CHECK(tp.vertices.size() == 1);
 }
 
+TEST_CASE("place_vertices: each sign-changing finest edge's crossing is computed once on larger trees; spherical "
+          "trees too (poles and the origin)" *
+          geolab::points(1) * geolab::builds_on("Task 1, Task 2, Task 10") *
+          geolab::hint("Return the number of crossings you computed: one per distinct sign-changing finest edge, an "
+                       "edge named by its two lattice ends as Octree::canonical names them (the phi seam, the polar "
+                       "axis and the origin merge points), however many leaves share it and however far apart in "
+                       "the traversal they are. A crossing computed twice, or two edges sharing one, is a bug. "
+                       "Handout §5.1.")) {
+    // the test's count: distinct (canonical lower end, canonical upper end) of the finest leaves' sign-changing
+    // cell edges, degenerate ones (both ends merged into one point) left out
+    auto distinct_edges = [](const Octree& t, std::size_t& coarse_changes) {
+        // a coarse leaf computes its own crossings (its edges are not finest edges): its distinct edges count apart
+        std::vector<std::array<std::int64_t, 7>> keys, coarse;
+        for (std::uint32_t li : tree_shape(t).leaves) {
+            const OctreeNode& nd = t.nodes[li];
+            for (int e = 0; e < 12; ++e) {
+                const glm::ivec3 q0 = t.corner(nd, cell_edge_corners[e][0]), q1 = t.corner(nd, cell_edge_corners[e][1]);
+                const glm::ivec3 k0 = t.canonical(q0), k1 = t.canonical(q1);
+                if (k0 == k1 || (t.value(q0) <= 0.0) == (t.value(q1) <= 0.0)) continue;
+                const bool finest = nd.level == t.max_level;
+                (finest ? keys : coarse).push_back({finest ? -1 : std::int64_t(li), k0.x, k0.y, k0.z, k1.x, k1.y, k1.z});
+            }
+        }
+        auto distinct = [](std::vector<std::array<std::int64_t, 7>>& v) {
+            std::sort(v.begin(), v.end());
+            return std::size_t(std::unique(v.begin(), v.end()) - v.begin());
+        };
+        coarse_changes = distinct(coarse);
+        return distinct(keys);
+    };
+    const FieldPtr ball = geolab::sphere({0.05, -0.1, 0.07}, 0.7), ring = geolab::torus({0, 0, 0}, 0.6, 0.25),
+                   csg = geolab::named_implicit("csg");
+    const PolygonSoup lion_mesh = load_model("lion");
+    const geolab::MeshField lion(lion_mesh);
+    const std::pair<const ScalarField*, const char*> cartesian[] = {
+        {ball.get(), "sphere, Cartesian level 7"}, {ring.get(), "torus, Cartesian level 7"},
+        {csg.get(), "csg, Cartesian level 7"}, {&lion, "lion (a field whose sign jumps), Cartesian level 5"}};
+    for (auto [f, name] : cartesian) {
+        Octree t = given_octree(*f, f == &lion ? 5 : 7);
+        const std::size_t crossings = place_vertices(t, {});
+        // the finest leaves' corners are all in the tree's cache now (their signs were needed): reading them again
+        // samples nothing
+        const std::size_t samples = t.samples();
+        for (std::uint32_t li : tree_shape(t).leaves)
+            if (t.nodes[li].level == t.max_level)
+                for (int c = 0; c < 8; ++c) t.value(t.corner(t.nodes[li], c));
+        const std::size_t resampled = t.samples() - samples;
+        std::size_t coarse = 0;
+        const std::size_t want = distinct_edges(t, coarse);
+        INFO(name << ": place_vertices returned " << crossings << "; distinct sign-changing finest edges " << want);
+        REQUIRE(coarse == 0);  // the given tree refines every sign change to the finest level
+        CHECK(crossings == want);
+        CHECK_MESSAGE(resampled == 0, "reading the finest leaves' corners after place_vertices took " << resampled
+                                          << " new samples: the tree's cache must keep what place_vertices sampled");
+    }
+    // spherical: the surface cuts the theta-edges leaving both poles (origin at the centre), the radial edges
+    // leaving the origin (origin just inside the surface), and an inner sphere r_min > 0
+    const FieldPtr s = geolab::sphere({0.1, -0.05, 0.2}, 0.7);
+    struct Case {
+        glm::dvec3 origin;
+        double r_min, r_max;
+        const char* what;
+    } cases[] = {{{0.1, -0.05, 0.2}, 0.0, 1.2, "sphere, origin at its centre, spherical level 5"},
+                 {{0.1, -0.05, 0.2 - 0.69}, 0.0, 1.6, "sphere, origin 0.01 inside it, spherical level 5"},
+                 {{0.0, 0.0, 0.0}, 0.1, 1.2, "sphere, origin near its centre, r_min 0.1, spherical level 5"}};
+    for (const Case& cs : cases) {
+        Octree t = build_spherical_octree(*s, 5, cs.origin, cs.r_min, cs.r_max);
+        const std::size_t crossings = place_vertices(t, {});
+        std::size_t coarse = 0;
+        const std::size_t want = distinct_edges(t, coarse);
+        INFO(cs.what << ": place_vertices returned " << crossings << "; distinct sign-changing finest edges " << want
+                     << " (+ " << coarse << " on coarse leaves)");
+        CHECK(crossings == want + coarse);
+    }
+}
+
 TEST_CASE("place_vertices: a QEF minimiser that leaves its cell gives way to the mass point" *
           geolab::points(2) * geolab::builds_on("Task 1, Task 2") *
           geolab::hint("The QEF minimiser can be far outside the cell (nearly parallel planes, noisy normals): then "
