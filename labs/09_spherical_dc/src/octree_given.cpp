@@ -29,8 +29,7 @@ void Octree::init_cartesian(const ScalarField& f, int level, const glm::dvec3& l
     nodes.assign(1, OctreeNode{});
     vertices.clear();
     qefs.clear();
-    cache_ = BlockGrid<double>(std::numeric_limits<double>::quiet_NaN(), resolution() + 1);
-    even_cache_ = BlockGrid<double>(std::numeric_limits<double>::quiet_NaN(), resolution() / 2 + 1);
+    release_samples();
     samples_ = 0;
 }
 
@@ -54,8 +53,7 @@ void Octree::init_spherical(const ScalarField& f, int level, const glm::dvec3& o
     nodes.assign(1, OctreeNode{});
     vertices.clear();
     qefs.clear();
-    cache_ = BlockGrid<double>(std::numeric_limits<double>::quiet_NaN(), resolution() + 1);
-    even_cache_ = BlockGrid<double>(std::numeric_limits<double>::quiet_NaN(), resolution() / 2 + 1);
+    release_samples();
     samples_ = 0;
     const int n = resolution();
     sin_t_.resize(n + 1);

@@ -290,8 +290,6 @@ private:
     std::size_t size_ = 0, mask_ = 0;
     int shift_ = 64;
 };
-// Ju et al.'s collapse test (simplify's conditions (0)-(3)) of node nd, whose 8 children are leaves with their signs
-// recorded. child_qef(c, v) is the QEF of child c's vertex v; it is asked for only once the sign tests have passed.
 // Room for a Qef, left uninitialised. Speed: the fused traversal below keeps 8 per node on its stack and fills only
 // those a collapse may read; zeroing them all (900 bytes a node) cost more than the collapses themselves.
 union QefSlot {
@@ -305,6 +303,8 @@ struct Collapse {
     DualVertex vertex;
     QefSlot merged;           // ok: the children's QEFs merged (the vertex's QEF when it has one)
 };
+// Ju et al.'s collapse test (simplify's conditions (0)-(3)) of node nd, whose 8 children are leaves with their signs
+// recorded. child_qef(c, v) is the QEF of child c's vertex v; it is asked for only once the sign tests have passed.
 template <class ChildQef>
 Collapse collapse_test(const Octree& tree, const OctreeNode& nd, double tolerance, double tau, ChildQef&& child_qef) {
     Collapse r;
@@ -355,14 +355,13 @@ Collapse collapse_test(const Octree& tree, const OctreeNode& nd, double toleranc
     r.signs = std::uint8_t(in_mask);
     return r;
 }
-// place_vertices, keeping the QEFs in *qefs when not null (beside tree.vertices), and with `fused` (Cartesian
-// trees) simplifying on the way: the one-shot function's path, which needs no QEF per vertex (memory).
+// place_vertices, keeping the QEFs in tree.qefs when keep_qefs, and with `fused` (Cartesian trees) simplifying on
+// the way: the one-shot function's path, which needs no QEF per vertex (memory).
 struct FusedSimplify {
     double tolerance = 0.0, tau = 0.01;  // simplify's arguments
     std::size_t collapses = 0;
 };
-std::size_t place_vertices_impl(Octree& tree, const VertexParams& params, std::vector<Qef>* qefs,
-                                FusedSimplify* fused) {
+std::size_t place_vertices_impl(Octree& tree, const VertexParams& params, bool keep_qefs, FusedSimplify* fused) {
     tree.vertices.clear();
     tree.qefs.clear();
     const bool spherical = tree.coordinates == Coordinates::spherical;
@@ -397,9 +396,9 @@ std::size_t place_vertices_impl(Octree& tree, const VertexParams& params, std::v
     // is resident as a whole, and the one-shot's peak memory is what they would add to (handout §Performance).
     const std::size_t leaves_estimate = tree.nodes.size() - tree.nodes.size() / 8;
     tree.vertices.reserve(leaves_estimate / 2);
-    if (qefs) {
-        qefs->reserve(leaves_estimate / 2);
-        prefer_huge_pages(*qefs);
+    if (keep_qefs) {
+        tree.qefs.reserve(leaves_estimate / 2);
+        prefer_huge_pages(tree.qefs);
     }
     // Speed: the lambdas below take lattice points by reference: passed by value, a glm::ivec3 travels in two 64-bit
     // registers that the compiler assembled from 32-bit stores to memory, a store-forwarding stall per call
@@ -478,7 +477,7 @@ std::size_t place_vertices_impl(Octree& tree, const VertexParams& params, std::v
         tree.nodes[li].vertex = std::uint32_t(tree.vertices.size());
         for (int k = 0; k < pieces; ++k) {
             tree.vertices.push_back({cell_vertex(qef[k], q0, q7), edges[k], std::uint8_t(pieces)});
-            if (qefs) qefs->push_back(qef[k]);
+            if (keep_qefs) tree.qefs.push_back(qef[k]);
         }
     };
     // the radial edge on the polar axis appears twice in a cell there (φ-lower and φ-upper corners): count it once
@@ -587,7 +586,7 @@ std::size_t place_vertices_impl(Octree& tree, const VertexParams& params, std::v
     // Memory (fused: the one-shot's path). The samples of lattice points with an odd coordinate serve only the
     // groups of finest leaves, which the traversal below meets in Morton order (x fastest), where every cell's lower
     // neighbours come first. A region R of level L − 2 (4³ finest cells: one block of those samples) is read by the
-    // groups of the regions R + d, d ∈ {−1, 0, 1}³ (face_joins looks two cells back); once R + (1, 1, 1), the last
+    // groups of the regions R + d, d ∈ {−1, 0, 1}³ (face_joins looks one cell beyond a face); once R + (1, 1, 1), the last
     // of them in that order, is done, R's block is released. `pending`: (Morton key of R + (1, 1, 1), R).
     const int region_level = tree.max_level - 2;
     const bool release = fused && !spherical && region_level >= 2;
@@ -667,7 +666,7 @@ std::size_t place_vertices_impl(Octree& tree, const VertexParams& params, std::v
 
 std::size_t place_vertices(Octree& tree, const VertexParams& params) {
     // BEGIN SOLUTION
-    return place_vertices_impl(tree, params, &tree.qefs, nullptr);
+    return place_vertices_impl(tree, params, true, nullptr);
     // END SOLUTION
 }
 
@@ -785,8 +784,6 @@ PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles) {
             groups.push_back(first);
         return false;
     });
-    // the vertex of the finest leaf in finest cell `cell`, or invalid_index when that cell is not a finest leaf with
-    // a vertex (or outside the domain)
     // the node of finest cell `cell` when it is a leaf, or null (not a finest leaf, or outside the domain)
     auto finest_leaf = [&](glm::ivec3 cell) -> const OctreeNode* {
         if (spherical) cell.z &= n_res - 1;
@@ -797,6 +794,8 @@ PolygonSoup contour(const Octree& tree, std::vector<PoleRing>* poles) {
         const OctreeNode& nd = tree.nodes[first + std::uint32_t((cell.x & 1) | (cell.y & 1) << 1 | (cell.z & 1) << 2)];
         return nd.is_leaf() ? &nd : nullptr;
     };
+    // the vertex of the finest leaf in finest cell `cell`, or invalid_index when that cell is not a finest leaf with
+    // a vertex (or outside the domain)
     auto finest_vertex = [&](glm::ivec3 cell) {
         const OctreeNode* nd = finest_leaf(cell);
         return nd ? nd->vertex : invalid_index;
@@ -1040,7 +1039,7 @@ PolygonSoup dual_contour_cartesian(const ScalarField& f, const CartesianParams& 
     // place_vertices and simplify in one pass (memory: no QEF per vertex, no second sweep), then the polygons
     // without the samples, which they do not read: the same soup as place_vertices, simplify and contour
     FusedSimplify fused{params.simplify_tolerance * tree.size / tree.resolution(), params.tau};
-    const std::size_t crossings = place_vertices_impl(tree, {params.tau, params.crossing_tolerance}, nullptr,
+    const std::size_t crossings = place_vertices_impl(tree, {params.tau, params.crossing_tolerance}, false,
                                                       params.simplify_tolerance > 0.0 ? &fused : nullptr);
     const std::size_t collapses = fused.collapses;
     tree.release_samples();

@@ -264,17 +264,10 @@ public:
     static std::size_t index_in_block(glm::ivec3 q) { return local(q); }
     //! Forget the block holding q (its slots read `empty` again) and keep its memory for the next block made.
     void release_block(glm::ivec3 q) {
-        const std::uint64_t key = block_key(q);
-        if (!find_block(key, false)) return;
-        std::uint32_t* id = dense_.empty() ? nullptr : &dense_[(std::size_t(key >> 42) * nb_ + ((key >> 21) & 0x1fffff)) * nb_ + (key & 0x1fffff)];
-        if (!id) {
-            const std::size_t mask = keys_.size() - 1;
-            std::size_t i = hash(key) & mask;
-            while (keys_[i] != key) i = (i + 1) & mask;
-            id = &ids_[i];  // the key stays, with no block (0): a later slot() makes one
-        }
+        std::uint32_t* id = find_block(block_key(q), false);
+        if (!id) return;
         released_.push_back(*id - 1);
-        *id = 0;
+        *id = 0;  // a hashed key stays, with no block: a later slot() makes one
         last_ = Memo{};
     }
     //! The grading boundary's encoding (geolab/grading/wire.hpp; T trivially copyable): the empty value, the
@@ -361,49 +354,49 @@ private:
         k ^= k >> 33;
         return std::size_t(k);
     }
-    bool find_block(std::uint64_t key, bool create) const {
+    //! The directory entry of block `key` (its id + 1), made with the block when `create`; null when there is none.
+    //! Memoises the block in last_.
+    std::uint32_t* find_block(std::uint64_t key, bool create) const {
         std::uint32_t* id = nullptr;
         if (!dense_.empty()) {
             const std::size_t bx = key >> 42, by = (key >> 21) & 0x1fffff, bz = key & 0x1fffff;
             if (bx >= nb_ || by >= nb_ || bz >= nb_) {
                 if (create) throw std::out_of_range("BlockGrid: lattice point outside the extent given");
-                return false;
+                return nullptr;
             }
             id = &dense_[(bx * nb_ + by) * nb_ + bz];
         } else {
             if (create && 2 * (blocks_ + 1) > keys_.size()) grow();
-            if (keys_.empty()) return false;
+            if (keys_.empty()) return nullptr;
             const std::size_t mask = keys_.size() - 1;
             std::size_t i = hash(key) & mask;
             while (keys_[i] != key && keys_[i] != ~std::uint64_t(0)) i = (i + 1) & mask;
             if (keys_[i] != key) {
-                if (!create) return false;
+                if (!create) return nullptr;
                 keys_[i] = key;
             }
             id = &ids_[i];
         }
         if (*id == 0) {
-            if (!create) return false;
+            if (!create) return nullptr;
             if (!released_.empty()) {  // reuse a released block's memory
                 *id = released_.back() + 1;
                 released_.pop_back();
                 std::fill_n(block(*id - 1), block_size, empty_);
-                last_.key = key;
-                last_.block = block(*id - 1);
-                return true;
+            } else {
+                if ((blocks_ & ((std::size_t(1) << chunk_shift_) - 1)) == 0) {
+                    chunks_.emplace_back().reserve(block_size << chunk_shift_);
+                    prefer_huge_pages(chunks_.back());
+                }
+                *id = std::uint32_t(++blocks_);  // ids are stored + 1: 0 means no block
+                // within the reserve: no move. Speed: copied from a ready empty block (a plain copy of 64 slots)
+                if (empty_block_.empty()) empty_block_.assign(block_size, empty_);
+                chunks_.back().insert(chunks_.back().end(), empty_block_.begin(), empty_block_.end());
             }
-            if ((blocks_ & ((std::size_t(1) << chunk_shift_) - 1)) == 0) {
-                chunks_.emplace_back().reserve(block_size << chunk_shift_);
-                prefer_huge_pages(chunks_.back());
-            }
-            *id = std::uint32_t(++blocks_);  // ids are stored + 1: 0 means no block
-            // within the reserve: no move. Speed: copied from a ready empty block (a plain copy of 64 slots)
-            if (empty_block_.empty()) empty_block_.assign(block_size, empty_);
-            chunks_.back().insert(chunks_.back().end(), empty_block_.begin(), empty_block_.end());
         }
         last_.key = key;
         last_.block = block(*id - 1);
-        return true;
+        return id;
     }
     void grow() const {
         std::vector<std::uint64_t> old_keys = std::move(keys_);
